@@ -1,0 +1,23 @@
+# Finds SuiteSparse CHOLMOD, which Debian ships without a CMake config or pkg-config file.
+# Defines the imported target CHOLMOD::CHOLMOD and CHOLMOD_FOUND.
+find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse)
+find_library(CHOLMOD_LIBRARY cholmod)
+find_library(CHOLMOD_AMD_LIBRARY amd)
+find_library(CHOLMOD_COLAMD_LIBRARY colamd)
+find_library(CHOLMOD_CONFIG_LIBRARY suitesparseconfig)
+
+include(FindPackageHandleStandardArgs)
+find_package_handle_standard_args(CHOLMOD
+    REQUIRED_VARS CHOLMOD_LIBRARY CHOLMOD_INCLUDE_DIR CHOLMOD_AMD_LIBRARY
+                  CHOLMOD_COLAMD_LIBRARY CHOLMOD_CONFIG_LIBRARY)
+
+if(CHOLMOD_FOUND AND NOT TARGET CHOLMOD::CHOLMOD)
+    add_library(CHOLMOD::CHOLMOD UNKNOWN IMPORTED)
+    set_target_properties(CHOLMOD::CHOLMOD PROPERTIES
+        IMPORTED_LOCATION "${CHOLMOD_LIBRARY}"
+        INTERFACE_INCLUDE_DIRECTORIES "${CHOLMOD_INCLUDE_DIR}"
+        INTERFACE_LINK_LIBRARIES
+            "${CHOLMOD_AMD_LIBRARY};${CHOLMOD_COLAMD_LIBRARY};${CHOLMOD_CONFIG_LIBRARY}")
+endif()
+mark_as_advanced(CHOLMOD_INCLUDE_DIR CHOLMOD_LIBRARY CHOLMOD_AMD_LIBRARY
+                 CHOLMOD_COLAMD_LIBRARY CHOLMOD_CONFIG_LIBRARY)

@@ -1,0 +1,74 @@
+#pragma once
+// The element-energy interface: what a type must provide to be summed over many elements by a
+// Problem. An element energy of arity N evaluates one element from the N variables it names.
+//
+// Required members (E is the energy type, x the element's N variables):
+//
+//   static constexpr int arity = N;
+//   double value(Index element, const Vec<N>& x) const;
+//       The energy of one element; +inf when x is infeasible (an inverted simplex, a distortion
+//       over its bound). This is the cheap path used by the line search.
+//   double value_gradient_hessian(Index element, const Vec<N>& x, Vec<N>& gradient,
+//                                 Mat<N>& hessian) const;
+//       Value, gradient (N) and Hessian (N x N, symmetric). May leave gradient and Hessian
+//       unspecified when the value is +inf.
+//
+// Optional members, detected at compile time:
+//
+//   double max_step(Index element, const Vec<N>& x, const Vec<N>& dx) const;
+//       The largest t > 0 such that x + s dx is feasible for every s in [0, t), or +inf. The
+//       line search never evaluates beyond the smallest max_step over all elements.
+//   static constexpr bool is_quadratic = true;
+//       The Hessian is constant: it is evaluated, projected and assembled once, then scaled by
+//       the term's weight. value_gradient(...) below, when present, spares the Hessian later.
+//   double value_gradient(Index element, const Vec<N>& x, Vec<N>& gradient) const;
+//   void project_hessian(Index element, const Vec<N>& x, Mat<N>& hessian) const;
+//       A closed-form positive-definite projection of the element's Hessian, used instead of the
+//       eigen-decomposition of HessianProjection.
+//
+// Per-element rest data (areas, inverse rest matrices, ...) lives in the energy object and is
+// indexed by the element number passed to every call. Calls are made concurrently from several
+// threads: the member functions must be const and free of shared mutable state.
+
+#include <concepts>
+#include <type_traits>
+
+#include "optim/types.h"
+
+namespace sa {
+
+template <class E>
+concept ElementEnergy = requires(const E& e, Index i, const Vec<E::arity>& x, Vec<E::arity>& g,
+                                 Mat<E::arity>& h) {
+    requires E::arity > 0;
+    { e.value(i, x) } -> std::convertible_to<double>;
+    { e.value_gradient_hessian(i, x, g, h) } -> std::convertible_to<double>;
+};
+
+template <class E>
+concept HasMaxStep = requires(const E& e, Index i, const Vec<E::arity>& x) {
+    { e.max_step(i, x, x) } -> std::convertible_to<double>;
+};
+
+template <class E>
+concept HasValueGradient = requires(const E& e, Index i, const Vec<E::arity>& x,
+                                    Vec<E::arity>& g) {
+    { e.value_gradient(i, x, g) } -> std::convertible_to<double>;
+};
+
+template <class E>
+concept HasClosedFormProjection = requires(const E& e, Index i, const Vec<E::arity>& x,
+                                           Mat<E::arity>& h) {
+    { e.project_hessian(i, x, h) };
+};
+
+template <class E>
+constexpr bool is_quadratic_energy() {
+    if constexpr (requires { E::is_quadratic; }) {
+        return E::is_quadratic;
+    } else {
+        return false;
+    }
+}
+
+}  // namespace sa

@@ -1,0 +1,317 @@
+#include "optim/hessian_assembler.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <limits>
+#include <sstream>
+
+#include "optim/stopwatch.h"
+
+namespace sa {
+
+namespace {
+
+/// Element `element` of term `term` uses a free variable as its `local`-th variable.
+struct Incidence {
+    TermId term;
+    Index element;
+    int local;
+};
+
+constexpr Index kColumnGrain = 1024;
+
+/// Exclusive prefix sum in place: counts [c0, c1, ...] -> offsets [0, c0, c0 + c1, ...].
+void counts_to_offsets(std::vector<std::int64_t>& v) {
+    std::int64_t sum = 0;
+    for (auto& c : v) {
+        const std::int64_t count = c;
+        c = sum;
+        sum += count;
+    }
+}
+
+}  // namespace
+
+HessianAssembler::HessianAssembler(const Problem& problem)
+    : problem_id_(problem.id()), structure_version_(problem.structure_version()) {
+    const Index n = problem.num_variables();
+    const int num_terms = problem.num_terms();
+
+    // Free variables: used by some term and not fixed, numbered in variable order.
+    std::vector<unsigned char> used(n, 0);
+    for (TermId t = 0; t < num_terms; ++t) {
+        const Term& term = problem.term(t);
+        for (Index e = 0; e < term.num_elements(); ++e) {
+            const Index* vars = term.element_variables(e);
+            for (int k = 0; k < term.arity(); ++k) used[vars[k]] = 1;
+        }
+    }
+    free_of_variable_.assign(n, -1);
+    for (Index v = 0; v < n; ++v) {
+        if (used[v] && !problem.is_fixed(v)) {
+            free_of_variable_[v] = static_cast<Index>(variable_of_free_.size());
+            variable_of_free_.push_back(v);
+        }
+    }
+    const Index nf = num_free();
+
+    // Slots: every term has gradient slots; non-quadratic terms also Hessian slots.
+    gradient_offset_.resize(num_terms);
+    hessian_offset_.resize(num_terms);
+    std::int64_t gradient_size = 0, hessian_size = 0;
+    for (TermId t = 0; t < num_terms; ++t) {
+        const Term& term = problem.term(t);
+        const std::int64_t ne = term.num_elements(), N = term.arity();
+        gradient_offset_[t] = gradient_size;
+        gradient_size += ne * N;
+        hessian_offset_[t] = term.is_quadratic() ? -1 : hessian_size;
+        if (!term.is_quadratic()) hessian_size += ne * N * N;
+    }
+    gradient_slots_.resize(gradient_size);
+    hessian_slots_.resize(hessian_size);
+
+    // Incidences of each free variable, ordered by (term, element, local index).
+    std::vector<std::int64_t> incidence_begin(nf + 1, 0);
+    for (TermId t = 0; t < num_terms; ++t) {
+        const Term& term = problem.term(t);
+        for (Index e = 0; e < term.num_elements(); ++e) {
+            const Index* vars = term.element_variables(e);
+            for (int k = 0; k < term.arity(); ++k) {
+                const Index j = free_of_variable_[vars[k]];
+                if (j >= 0) ++incidence_begin[j];
+            }
+        }
+    }
+    counts_to_offsets(incidence_begin);
+    std::vector<Incidence> incidences(incidence_begin[nf]);
+    {
+        std::vector<std::int64_t> cursor(incidence_begin.begin(), incidence_begin.end() - 1);
+        for (TermId t = 0; t < num_terms; ++t) {
+            const Term& term = problem.term(t);
+            for (Index e = 0; e < term.num_elements(); ++e) {
+                const Index* vars = term.element_variables(e);
+                for (int k = 0; k < term.arity(); ++k) {
+                    const Index j = free_of_variable_[vars[k]];
+                    if (j >= 0) incidences[cursor[j]++] = Incidence{t, e, k};
+                }
+            }
+        }
+    }
+
+    // Gradient gather lists: the incidences themselves.
+    gradient_source_begin_ = incidence_begin;
+    gradient_source_.resize(incidences.size());
+    tbb::parallel_for(std::size_t(0), incidences.size(), [&](std::size_t p) {
+        const Incidence& in = incidences[p];
+        gradient_source_[p] = gradient_offset_[in.term] +
+                              std::int64_t(in.element) * problem.term(in.term).arity() + in.local;
+    });
+
+    // Pattern: rows i >= j of column j are the free variables sharing an element with j.
+    auto collect_rows = [&](Index j, std::vector<Index>& rows) {
+        rows.clear();
+        rows.push_back(j);
+        for (std::int64_t p = incidence_begin[j]; p < incidence_begin[j + 1]; ++p) {
+            const Term& term = problem.term(incidences[p].term);
+            const Index* vars = term.element_variables(incidences[p].element);
+            for (int r = 0; r < term.arity(); ++r) {
+                const Index i = free_of_variable_[vars[r]];
+                if (i > j) rows.push_back(i);
+            }
+        }
+        std::sort(rows.begin(), rows.end());
+        rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    };
+    std::vector<std::int64_t> column_begin(nf + 1, 0);
+    tbb::parallel_for(tbb::blocked_range<Index>(0, nf, kColumnGrain),
+                      [&](const tbb::blocked_range<Index>& range) {
+                          std::vector<Index> rows;
+                          for (Index j = range.begin(); j != range.end(); ++j) {
+                              collect_rows(j, rows);
+                              column_begin[j] = static_cast<std::int64_t>(rows.size());
+                          }
+                      });
+    counts_to_offsets(column_begin);
+    const std::int64_t nnz = column_begin[nf];
+    if (nnz > std::numeric_limits<int>::max()) {
+        std::ostringstream msg;
+        msg << "Hessian has " << nnz << " nonzeros in its lower triangle; at most "
+            << std::numeric_limits<int>::max() << " are supported";
+        throw InvalidArgumentError(msg.str());
+    }
+    hessian_.resize(nf, nf);
+    hessian_.resizeNonZeros(static_cast<Index>(nnz));
+    for (Index j = 0; j <= nf; ++j) hessian_.outerIndexPtr()[j] = static_cast<int>(column_begin[j]);
+    tbb::parallel_for(tbb::blocked_range<Index>(0, nf, kColumnGrain),
+                      [&](const tbb::blocked_range<Index>& range) {
+                          std::vector<Index> rows;
+                          for (Index j = range.begin(); j != range.end(); ++j) {
+                              collect_rows(j, rows);
+                              std::copy(rows.begin(), rows.end(),
+                                        hessian_.innerIndexPtr() + column_begin[j]);
+                          }
+                      });
+    std::fill(hessian_.valuePtr(), hessian_.valuePtr() + nnz, 0.0);
+    diagonal_position_.assign(column_begin.begin(), column_begin.end() - 1);
+
+    // Visits every (element Hessian entry -> matrix entry) contribution of column j whose term
+    // passes `want`, in the fixed order (term, element, local column, local row).
+    auto for_each_contribution = [&](Index j, auto&& want, auto&& visit) {
+        const int* rows_begin = hessian_.innerIndexPtr() + column_begin[j];
+        const int* rows_end = hessian_.innerIndexPtr() + column_begin[j + 1];
+        for (std::int64_t p = incidence_begin[j]; p < incidence_begin[j + 1]; ++p) {
+            const Incidence& in = incidences[p];
+            if (!want(in.term)) continue;
+            const Term& term = problem.term(in.term);
+            const Index* vars = term.element_variables(in.element);
+            for (int r = 0; r < term.arity(); ++r) {
+                const Index i = free_of_variable_[vars[r]];
+                if (i < j) continue;
+                const std::int64_t entry =
+                    column_begin[j] + (std::lower_bound(rows_begin, rows_end, i) - rows_begin);
+                const std::int64_t local = std::int64_t(in.local) * term.arity() + r;
+                visit(entry, in, local);
+            }
+        }
+    };
+
+    // Gather lists of the non-quadratic terms, per matrix entry.
+    auto non_quadratic = [&](TermId t) { return hessian_offset_[t] >= 0; };
+    entry_source_begin_.assign(nnz + 1, 0);
+    tbb::parallel_for(tbb::blocked_range<Index>(0, nf, kColumnGrain),
+                      [&](const tbb::blocked_range<Index>& range) {
+                          for (Index j = range.begin(); j != range.end(); ++j) {
+                              for_each_contribution(j, non_quadratic,
+                                                    [&](std::int64_t entry, const Incidence&,
+                                                        std::int64_t) { ++entry_source_begin_[entry]; });
+                          }
+                      });
+    counts_to_offsets(entry_source_begin_);
+    entry_source_.resize(entry_source_begin_[nnz]);
+    tbb::parallel_for(
+        tbb::blocked_range<Index>(0, nf, kColumnGrain), [&](const tbb::blocked_range<Index>& range) {
+            for (Index j = range.begin(); j != range.end(); ++j) {
+                // Entries of column j are filled only from column j: a local cursor suffices.
+                std::vector<std::int64_t> cursor(entry_source_begin_.begin() + column_begin[j],
+                                                 entry_source_begin_.begin() + column_begin[j + 1]);
+                for_each_contribution(
+                    j, non_quadratic, [&](std::int64_t entry, const Incidence& in, std::int64_t local) {
+                        const std::int64_t N = problem.term(in.term).arity();
+                        entry_source_[cursor[entry - column_begin[j]]++] =
+                            hessian_offset_[in.term] + std::int64_t(in.element) * N * N + local;
+                    });
+            }
+        });
+
+    // Quadratic terms: evaluate, project (negative curvature clamped to zero) and sum once.
+    const Eigen::VectorXd& x = problem.variables();
+    for (TermId t = 0; t < num_terms; ++t) {
+        const Term& term = problem.term(t);
+        if (!term.is_quadratic()) continue;
+        const std::int64_t N = term.arity();
+        std::vector<double> g(std::size_t(term.num_elements()) * N);
+        std::vector<double> h(std::size_t(term.num_elements()) * N * N);
+        term.evaluate(x, 1.0, g.data(), h.data());
+        term.project(x, h.data(), ProjectionMode::kClamp, 0.0);
+        std::vector<double> dense(nnz, 0.0);
+        std::vector<unsigned char> touched(nnz, 0);
+        auto this_term = [t](TermId u) { return u == t; };
+        tbb::parallel_for(tbb::blocked_range<Index>(0, nf, kColumnGrain),
+                          [&](const tbb::blocked_range<Index>& range) {
+                              for (Index j = range.begin(); j != range.end(); ++j) {
+                                  for_each_contribution(
+                                      j, this_term,
+                                      [&](std::int64_t entry, const Incidence& in, std::int64_t local) {
+                                          dense[entry] += h[std::size_t(in.element) * N * N + local];
+                                          touched[entry] = 1;
+                                      });
+                              }
+                          });
+        QuadraticPart part{t, {}, {}};
+        for (std::int64_t p = 0; p < nnz; ++p) {
+            if (touched[p]) {
+                part.position.push_back(p);
+                part.value.push_back(dense[p]);
+            }
+        }
+        quadratic_parts_.push_back(std::move(part));
+    }
+    gradient_.setZero(nf);
+}
+
+bool HessianAssembler::matches(const Problem& problem) const {
+    return problem.id() == problem_id_ && problem.structure_version() == structure_version_;
+}
+
+HessianAssembler::Evaluation HessianAssembler::evaluate(const Problem& problem,
+                                                        const Eigen::VectorXd& x,
+                                                        ProjectionMode mode, double epsilon,
+                                                        PhaseTimes& times) {
+    Evaluation result;
+    const int num_terms = problem.num_terms();
+    result.term_values.assign(num_terms, 0.0);
+    Stopwatch watch;
+
+    for (TermId t = 0; t < num_terms; ++t) {
+        const Term& term = problem.term(t);
+        const double w = term.weight();
+        const double v =
+            term.evaluate(x, w, gradient_slots_.data() + gradient_offset_[t],
+                          term.is_quadratic() ? nullptr : hessian_slots_.data() + hessian_offset_[t]);
+        result.term_values[t] = v;
+        if (!(std::abs(v) < kInfinity)) {  // +inf: infeasible; NaN: broken evaluation
+            result.energy = v;
+            times.evaluate += watch.lap();
+            return result;
+        }
+        result.energy += w * v;
+    }
+    times.evaluate += watch.lap();
+
+    for (TermId t = 0; t < num_terms; ++t) {
+        if (hessian_offset_[t] < 0) continue;
+        result.projected_blocks +=
+            problem.term(t).project(x, hessian_slots_.data() + hessian_offset_[t], mode, epsilon);
+    }
+    times.project += watch.lap();
+
+    double* values = hessian_.valuePtr();
+    const std::int64_t nnz = hessian_.nonZeros();
+    tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, nnz, 4096),
+                      [&](const tbb::blocked_range<std::int64_t>& range) {
+                          for (std::int64_t p = range.begin(); p != range.end(); ++p) {
+                              double sum = 0.0;
+                              for (std::int64_t s = entry_source_begin_[p];
+                                   s < entry_source_begin_[p + 1]; ++s) {
+                                  sum += hessian_slots_[entry_source_[s]];
+                              }
+                              values[p] = sum;
+                          }
+                      });
+    for (const QuadraticPart& part : quadratic_parts_) {
+        const double w = problem.term(part.term).weight();
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, part.position.size(), 4096),
+                          [&](const tbb::blocked_range<std::size_t>& range) {
+                              for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                                  values[part.position[i]] += w * part.value[i];
+                              }
+                          });
+    }
+    tbb::parallel_for(tbb::blocked_range<Index>(0, num_free(), 4096),
+                      [&](const tbb::blocked_range<Index>& range) {
+                          for (Index j = range.begin(); j != range.end(); ++j) {
+                              double sum = 0.0;
+                              for (std::int64_t s = gradient_source_begin_[j];
+                                   s < gradient_source_begin_[j + 1]; ++s) {
+                                  sum += gradient_slots_[gradient_source_[s]];
+                              }
+                              gradient_[j] = sum;
+                          }
+                      });
+    times.assemble += watch.lap();
+    return result;
+}
+
+}  // namespace sa

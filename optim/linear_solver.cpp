@@ -1,0 +1,125 @@
+#include "optim/linear_solver.h"
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/SparseCholesky>
+#include <optional>
+
+#include "optim/errors.h"
+
+namespace sa {
+
+std::string to_string(LinearSolverType type) {
+    switch (type) {
+        case LinearSolverType::kCholmodSupernodal: return "cholmod-supernodal";
+        case LinearSolverType::kCholmodSimplicial: return "cholmod-simplicial";
+        case LinearSolverType::kEigenLDLT: return "eigen-ldlt";
+    }
+    return "unknown";
+}
+
+namespace {
+using SparseMatrix = Eigen::SparseMatrix<double>;
+using CholmodSupernodal = Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>;
+using CholmodSimplicial = Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower>;
+using EigenLDLT = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>;
+
+/// CHOLMOD reports through its own printf by default; the library stays silent and reports
+/// through statuses instead.
+void quiet(cholmod_common& common) { common.print = 0; }
+}  // namespace
+
+struct LinearSolver::Impl {
+    LinearSolverType type;
+    std::optional<CholmodSupernodal> supernodal;
+    std::optional<CholmodSimplicial> simplicial;
+    std::optional<EigenLDLT> ldlt;
+    std::string fallback_reason;
+    bool analyzed = false;
+
+    void make(LinearSolverType t) {
+        type = t;
+        supernodal.reset();
+        simplicial.reset();
+        ldlt.reset();
+        switch (t) {
+            case LinearSolverType::kCholmodSupernodal: quiet(supernodal.emplace().cholmod()); break;
+            case LinearSolverType::kCholmodSimplicial: quiet(simplicial.emplace().cholmod()); break;
+            case LinearSolverType::kEigenLDLT: ldlt.emplace(); break;
+        }
+    }
+
+    template <class Cholmod>
+    FactorizationStatus factorize_cholmod(Cholmod& solver, const SparseMatrix& lower) {
+        solver.factorize(lower);
+        const int status = solver.cholmod().status;
+        if (solver.info() == Eigen::Success && status >= CHOLMOD_OK) return FactorizationStatus::kSuccess;
+        if (status == CHOLMOD_NOT_POSDEF || (status >= CHOLMOD_OK && solver.info() != Eigen::Success)) {
+            return FactorizationStatus::kNotPositiveDefinite;
+        }
+        fallback_reason = "CHOLMOD status " + std::to_string(status) + " (" +
+                          (status == CHOLMOD_OUT_OF_MEMORY ? "out of memory"
+                           : status == CHOLMOD_TOO_LARGE   ? "problem too large"
+                                                           : "error") +
+                          "); using Eigen's SimplicialLDLT";
+        make(LinearSolverType::kEigenLDLT);
+        ldlt->analyzePattern(lower);
+        return factorize_ldlt(lower);
+    }
+
+    FactorizationStatus factorize_ldlt(const SparseMatrix& lower) {
+        ldlt->factorize(lower);
+        if (ldlt->info() == Eigen::NumericalIssue) return FactorizationStatus::kNotPositiveDefinite;
+        if (ldlt->info() != Eigen::Success) return FactorizationStatus::kFailed;
+        // LDL^T succeeds on indefinite matrices: positive definite means every pivot > 0.
+        if (lower.rows() > 0 && !(ldlt->vectorD().minCoeff() > 0.0)) {
+            return FactorizationStatus::kNotPositiveDefinite;
+        }
+        return FactorizationStatus::kSuccess;
+    }
+};
+
+LinearSolver::LinearSolver(LinearSolverType type) : impl_(std::make_unique<Impl>()) {
+    impl_->make(type);
+}
+LinearSolver::~LinearSolver() = default;
+LinearSolver::LinearSolver(LinearSolver&&) noexcept = default;
+LinearSolver& LinearSolver::operator=(LinearSolver&&) noexcept = default;
+
+void LinearSolver::analyze(const SparseMatrix& lower) {
+    if (lower.rows() != lower.cols()) {
+        throw InvalidArgumentError("linear solver: matrix is " + std::to_string(lower.rows()) +
+                                   " x " + std::to_string(lower.cols()) + ", not square");
+    }
+    switch (impl_->type) {
+        case LinearSolverType::kCholmodSupernodal: impl_->supernodal->analyzePattern(lower); break;
+        case LinearSolverType::kCholmodSimplicial: impl_->simplicial->analyzePattern(lower); break;
+        case LinearSolverType::kEigenLDLT: impl_->ldlt->analyzePattern(lower); break;
+    }
+    impl_->analyzed = true;
+}
+
+FactorizationStatus LinearSolver::factorize(const SparseMatrix& lower) {
+    if (!impl_->analyzed) throw InvalidArgumentError("linear solver: factorize before analyze");
+    switch (impl_->type) {
+        case LinearSolverType::kCholmodSupernodal:
+            return impl_->factorize_cholmod(*impl_->supernodal, lower);
+        case LinearSolverType::kCholmodSimplicial:
+            return impl_->factorize_cholmod(*impl_->simplicial, lower);
+        case LinearSolverType::kEigenLDLT: return impl_->factorize_ldlt(lower);
+    }
+    return FactorizationStatus::kFailed;
+}
+
+Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& rhs) const {
+    switch (impl_->type) {
+        case LinearSolverType::kCholmodSupernodal: return impl_->supernodal->solve(rhs);
+        case LinearSolverType::kCholmodSimplicial: return impl_->simplicial->solve(rhs);
+        case LinearSolverType::kEigenLDLT: return impl_->ldlt->solve(rhs);
+    }
+    return {};
+}
+
+LinearSolverType LinearSolver::active_type() const { return impl_->type; }
+const std::string& LinearSolver::fallback_reason() const { return impl_->fallback_reason; }
+
+}  // namespace sa

@@ -1,0 +1,54 @@
+#pragma once
+// Sparse symmetric positive-definite solver for the Newton system H d = -g, given H's lower
+// triangle. CHOLMOD stays behind this interface: cholmod.h is not included by any public header.
+//
+//   kCholmodSupernodal   CHOLMOD supernodal LL^T (BLAS-3 on dense supernodes, OpenBLAS);
+//                        the default, and the fastest on meshes beyond a few thousand elements.
+//   kCholmodSimplicial   CHOLMOD simplicial LL^T: no BLAS; fast on small systems.
+//   kEigenLDLT           Eigen's SimplicialLDLT (AMD ordering).
+// The symbolic analysis (fill-reducing ordering) is done by analyze() and reused by every
+// factorize() until analyze() is called again. If CHOLMOD fails for a reason other than an
+// indefinite matrix (out of memory, a problem too large), the solver falls back to Eigen's
+// SimplicialLDLT and says so in fallback_reason().
+
+#include <Eigen/Sparse>
+#include <memory>
+#include <string>
+
+namespace sa {
+
+enum class LinearSolverType { kCholmodSupernodal, kCholmodSimplicial, kEigenLDLT };
+
+std::string to_string(LinearSolverType type);
+
+enum class FactorizationStatus {
+    kSuccess,
+    kNotPositiveDefinite,  ///< the matrix (as regularized so far) is not positive definite
+    kFailed,               ///< every available factorization failed for another reason
+};
+
+class LinearSolver {
+public:
+    explicit LinearSolver(LinearSolverType type = LinearSolverType::kCholmodSupernodal);
+    ~LinearSolver();
+    LinearSolver(LinearSolver&&) noexcept;
+    LinearSolver& operator=(LinearSolver&&) noexcept;
+
+    /// Symbolic analysis of the pattern of `lower` (a square lower triangle, column-major).
+    void analyze(const Eigen::SparseMatrix<double>& lower);
+    /// Numeric factorization of `lower`, whose pattern must be the analyzed one.
+    FactorizationStatus factorize(const Eigen::SparseMatrix<double>& lower);
+    /// Solves with the last successful factorization.
+    Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
+
+    /// The factorization actually in use (differs from the requested one after a fallback).
+    LinearSolverType active_type() const;
+    /// Why the solver fell back to Eigen's LDL^T; empty if it did not.
+    const std::string& fallback_reason() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace sa

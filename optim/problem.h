@@ -1,0 +1,116 @@
+#pragma once
+// A problem: a vector of variables and a list of terms, each an element energy summed over many
+// elements. Its energy is E(x) = sum_t weight_t * sum_e energy_t(element e's variables).
+//
+//   sa::Problem problem(x0);
+//   problem.add_term("distortion", MyEnergy{rest}, elements);        // elements: {{i, j, ...}, ...}
+//   problem.set_fixed(7);                                            // a pinned variable
+//   sa::NewtonSummary summary = sa::NewtonSolver(options).solve(problem);
+//
+// Variables may be fixed (they keep their value and leave the linear system), grouped into named
+// blocks that carry a Hessian-only diagonal shift and take part, or not, in the regularization the
+// Newton loop adds when a factorization fails.
+
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "optim/errors.h"
+#include "optim/term.h"
+
+namespace sa {
+
+using TermId = int;
+using BlockId = int;
+
+/// A named range of variables [begin, end).
+struct VariableBlock {
+    std::string name;
+    Index begin = 0;
+    Index end = 0;
+    /// Added to the Hessian diagonal of these variables at every iteration. It changes the
+    /// Newton step, never the energy (the paper's 1e-6 * lambda on translations, section 4.4).
+    double hessian_shift = 0.0;
+    /// Whether these variables receive the diagonal tau that the Newton loop adds, escalating,
+    /// when a factorization fails (section 4.4, step 3: only the A_i).
+    bool regularize_on_failure = true;
+};
+
+class Problem {
+public:
+    /// A problem over `variables.size()` variables, starting from `variables`.
+    explicit Problem(Eigen::VectorXd variables);
+    Problem(const Problem&) = delete;
+    Problem& operator=(const Problem&) = delete;
+    Problem(Problem&&) = default;
+    Problem& operator=(Problem&&) = default;
+
+    Index num_variables() const { return static_cast<Index>(variables_.size()); }
+    const Eigen::VectorXd& variables() const { return variables_; }
+    /// Replaces the current variables (same size; throws otherwise).
+    void set_variables(const Eigen::VectorXd& variables);
+
+    /// Adds `energy` over `elements` (each names E::arity variable indices) with `weight`.
+    /// Throws InvalidArgumentError naming the term and element for an index out of range.
+    template <ElementEnergy E>
+    TermId add_term(std::string name, E energy,
+                    std::vector<std::array<Index, E::arity>> elements, double weight = 1.0) {
+        for (std::size_t e = 0; e < elements.size(); ++e) {
+            for (Index v : elements[e]) check_element_index(name, e, v);
+        }
+        auto term = std::make_unique<EnergyTerm<E>>(std::move(name), std::move(energy),
+                                                    std::move(elements), 1.0);
+        term->set_weight(weight);
+        terms_.push_back(std::move(term));
+        ++structure_version_;
+        return static_cast<TermId>(terms_.size() - 1);
+    }
+
+    int num_terms() const { return static_cast<int>(terms_.size()); }
+    const Term& term(TermId id) const { return *terms_.at(id); }
+    Term& term(TermId id) { return *terms_.at(id); }
+    /// Changes a term's weight (the paper's lambda); allowed between iterations.
+    void set_weight(TermId id, double weight) { terms_.at(id)->set_weight(weight); }
+    double weight(TermId id) const { return terms_.at(id)->weight(); }
+
+    /// Fixes or frees a variable. A fixed variable keeps its current value.
+    void set_fixed(Index variable, bool fixed = true);
+    bool is_fixed(Index variable) const { return fixed_.at(variable) != 0; }
+    Index num_free_variables() const;
+
+    /// Declares a block; blocks may not overlap. Throws on a bad or overlapping range.
+    BlockId add_variable_block(std::string name, Index begin, Index end);
+    int num_variable_blocks() const { return static_cast<int>(blocks_.size()); }
+    const VariableBlock& variable_block(BlockId id) const { return blocks_.at(id); }
+    void set_hessian_shift(BlockId id, double shift);
+    void set_regularize_on_failure(BlockId id, bool regularize);
+
+    /// The weighted energy at `x`; +inf when an element is infeasible. When `term_values` is
+    /// given, it receives each term's unweighted value.
+    double value(const Eigen::VectorXd& x, std::vector<double>* term_values = nullptr) const;
+    double value() const { return value(variables_); }
+    /// The largest step t such that x + s dx stays feasible for all s in [0, t) (min over terms).
+    double max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const;
+
+    /// Changes whenever terms are added or variables fixed/freed: a Hessian pattern and a
+    /// symbolic factorization remain valid while (id(), structure_version()) is unchanged.
+    std::uint64_t structure_version() const { return structure_version_; }
+    /// A number unique to this problem object within the process.
+    std::uint64_t id() const { return id_; }
+
+private:
+    void check_element_index(const std::string& term, std::size_t element, Index v) const;
+
+    Eigen::VectorXd variables_;
+    std::vector<std::unique_ptr<Term>> terms_;
+    std::vector<unsigned char> fixed_;
+    std::vector<VariableBlock> blocks_;
+    std::uint64_t structure_version_ = 0;
+    std::uint64_t id_;
+};
+
+}  // namespace sa

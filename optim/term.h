@@ -1,0 +1,200 @@
+#pragma once
+// A term: one element energy applied to many elements, each element naming `arity` entries of the
+// problem's variable vector, times a weight the caller may change between iterations.
+//
+// `Term` is the type-erased interface the assembler and the line search use; `EnergyTerm<E>`
+// implements it for any ElementEnergy E, with the per-element calls inlined.
+//
+// Slot layout used by evaluate()/project(): element e of a term of arity N owns
+// gradient slots [e*N, e*N + N) and Hessian slots [e*N*N, e*N*N + N*N) (column-major N x N).
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include <Eigen/Core>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "optim/element_energy.h"
+#include "optim/hessian_projection.h"
+
+namespace sa {
+
+class Term {
+public:
+    Term(std::string name, double weight) : name_(std::move(name)), weight_(weight) {}
+    virtual ~Term() = default;
+    Term(const Term&) = delete;
+    Term& operator=(const Term&) = delete;
+
+    const std::string& name() const { return name_; }
+    double weight() const { return weight_; }
+    /// Throws InvalidArgumentError unless `weight` is finite and >= 0.
+    void set_weight(double weight);
+
+    virtual int arity() const = 0;
+    virtual Index num_elements() const = 0;
+    /// The `arity()` variable indices of element `e`.
+    virtual const Index* element_variables(Index e) const = 0;
+    virtual bool is_quadratic() const = 0;
+    virtual bool has_max_step() const = 0;
+
+    /// Unweighted sum of the element values at `x`; +inf as soon as one element is infeasible.
+    /// The sum is formed in the same order for any number of threads.
+    virtual double value(const Eigen::VectorXd& x) const = 0;
+    /// Unweighted sum of the element values; writes `scale` times each element's gradient into
+    /// `gradient_slots` and, unless it is null, `scale` times its Hessian into `hessian_slots`.
+    virtual double evaluate(const Eigen::VectorXd& x, double scale, double* gradient_slots,
+                            double* hessian_slots) const = 0;
+    /// Projects every element Hessian in `hessian_slots` in place; returns how many changed.
+    virtual Index project(const Eigen::VectorXd& x, double* hessian_slots, ProjectionMode mode,
+                          double epsilon) const = 0;
+    /// Smallest max_step over the elements (+inf when the energy has none).
+    virtual double max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const = 0;
+    /// The unweighted value of element `e` (for reports and tests).
+    virtual double element_value(Index e, const Eigen::VectorXd& x) const = 0;
+
+protected:
+    /// Elements per task: fixed, so that sums are split the same way on any thread count.
+    static constexpr Index kGrain = 512;
+
+private:
+    std::string name_;
+    double weight_;
+};
+
+template <ElementEnergy E>
+class EnergyTerm final : public Term {
+public:
+    static constexpr int N = E::arity;
+    using Element = std::array<Index, N>;
+
+    EnergyTerm(std::string name, E energy, std::vector<Element> elements, double weight)
+        : Term(std::move(name), weight), energy_(std::move(energy)),
+          elements_(std::move(elements)) {}
+
+    const E& energy() const { return energy_; }
+    const std::vector<Element>& elements() const { return elements_; }
+
+    int arity() const override { return N; }
+    Index num_elements() const override { return static_cast<Index>(elements_.size()); }
+    const Index* element_variables(Index e) const override { return elements_[e].data(); }
+    bool is_quadratic() const override { return is_quadratic_energy<E>(); }
+    bool has_max_step() const override { return HasMaxStep<E>; }
+
+    double value(const Eigen::VectorXd& x) const override {
+        std::atomic<bool> infeasible{false};
+        const double sum = tbb::parallel_deterministic_reduce(
+            range(), 0.0,
+            [&](const tbb::blocked_range<Index>& r, double acc) {
+                if (infeasible.load(std::memory_order_relaxed)) return kInfinity;
+                for (Index e = r.begin(); e != r.end(); ++e) {
+                    const double v = energy_.value(e, gather(x, e));
+                    if (!(v < kInfinity)) {
+                        if (v == kInfinity) infeasible.store(true, std::memory_order_relaxed);
+                        return v;
+                    }
+                    acc += v;
+                }
+                return acc;
+            },
+            std::plus<double>());
+        return infeasible.load() ? kInfinity : sum;
+    }
+
+    double evaluate(const Eigen::VectorXd& x, double scale, double* gradient_slots,
+                    double* hessian_slots) const override {
+        return tbb::parallel_deterministic_reduce(
+            range(), 0.0,
+            [&](const tbb::blocked_range<Index>& r, double acc) {
+                Vec<N> g;
+                Mat<N> h;
+                for (Index e = r.begin(); e != r.end(); ++e) {
+                    const Vec<N> xe = gather(x, e);
+                    double v;
+                    if constexpr (HasValueGradient<E>) {
+                        v = hessian_slots == nullptr ? energy_.value_gradient(e, xe, g)
+                                                     : energy_.value_gradient_hessian(e, xe, g, h);
+                    } else {
+                        v = energy_.value_gradient_hessian(e, xe, g, h);
+                    }
+                    acc += v;
+                    Eigen::Map<Vec<N>>(gradient_slots + std::size_t(e) * N) = scale * g;
+                    if (hessian_slots != nullptr) {
+                        Eigen::Map<Mat<N>>(hessian_slots + std::size_t(e) * N * N) = scale * h;
+                    }
+                }
+                return acc;
+            },
+            std::plus<double>());
+    }
+
+    Index project(const Eigen::VectorXd& x, double* hessian_slots, ProjectionMode mode,
+                  double epsilon) const override {
+        if (mode == ProjectionMode::kNone) return 0;
+        return tbb::parallel_deterministic_reduce(
+            range(), Index{0},
+            [&](const tbb::blocked_range<Index>& r, Index changed) {
+                for (Index e = r.begin(); e != r.end(); ++e) {
+                    Eigen::Map<Mat<N>> slot(hessian_slots + std::size_t(e) * N * N);
+                    Mat<N> h = slot;
+                    bool did;
+                    if constexpr (HasClosedFormProjection<E>) {
+                        const Mat<N> before = h;
+                        energy_.project_hessian(e, gather(x, e), h);
+                        did = h != before;
+                    } else {
+                        did = project_hessian_block<N>(h, mode, epsilon);
+                    }
+                    if (did) {
+                        slot = h;
+                        ++changed;
+                    }
+                }
+                return changed;
+            },
+            std::plus<Index>());
+    }
+
+    double max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const override {
+        if constexpr (!HasMaxStep<E>) {
+            return kInfinity;
+        } else {
+            return tbb::parallel_reduce(
+                range(), kInfinity,
+                [&](const tbb::blocked_range<Index>& r, double smallest) {
+                    for (Index e = r.begin(); e != r.end(); ++e) {
+                        smallest = std::min(smallest,
+                                            double(energy_.max_step(e, gather(x, e), gather(dx, e))));
+                    }
+                    return smallest;
+                },
+                [](double a, double b) { return std::min(a, b); });
+        }
+    }
+
+    double element_value(Index e, const Eigen::VectorXd& x) const override {
+        return energy_.value(e, gather(x, e));
+    }
+
+private:
+    tbb::blocked_range<Index> range() const {
+        return tbb::blocked_range<Index>(0, num_elements(), kGrain);
+    }
+    Vec<N> gather(const Eigen::VectorXd& x, Index e) const {
+        Vec<N> xe;
+        const Element& vars = elements_[e];
+        for (int k = 0; k < N; ++k) xe[k] = x[vars[k]];
+        return xe;
+    }
+
+    E energy_;
+    std::vector<Element> elements_;
+};
+
+}  // namespace sa

@@ -1,0 +1,22 @@
+#pragma once
+// Basic index and small fixed-size matrix types shared by every layer.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <limits>
+
+namespace sa {
+
+/// Index of a variable, an element or a vertex. 32 bits: problems have fewer than 2^31
+/// variables, and element tables are the largest arrays we keep.
+using Index = int;
+
+/// Fixed-size column vector and square matrix used by element energies of arity N.
+template <int N>
+using Vec = Eigen::Matrix<double, N, 1>;
+template <int N>
+using Mat = Eigen::Matrix<double, N, N>;
+
+inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+}  // namespace sa

@@ -1,0 +1,85 @@
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "optim/hessian_projection.h"
+
+namespace sa {
+namespace {
+
+Mat<4> random_symmetric(std::mt19937& rng, const Vec<4>& eigenvalues) {
+    std::normal_distribution<double> normal;
+    Mat<4> a;
+    for (int i = 0; i < 16; ++i) a(i) = normal(rng);
+    const Eigen::HouseholderQR<Mat<4>> qr(a);
+    const Mat<4> q = qr.householderQ();
+    return q * eigenvalues.asDiagonal() * q.transpose();
+}
+
+double smallest_eigenvalue(const Mat<4>& h) {
+    return Eigen::SelfAdjointEigenSolver<Mat<4>>(h, Eigen::EigenvaluesOnly).eigenvalues()(0);
+}
+
+TEST(HessianProjection, ClampRaisesEveryEigenvalueToEpsilon) {
+    std::mt19937 rng(1);
+    const double eps = 1e-3;
+    Mat<4> h = random_symmetric(rng, Vec<4>(-5.0, -0.1, 2.0, 7.0));
+    EXPECT_TRUE(project_hessian_block<4>(h, ProjectionMode::kClamp, eps));
+    const Vec<4> values = Eigen::SelfAdjointEigenSolver<Mat<4>>(h).eigenvalues();
+    EXPECT_NEAR(values(0), eps, 1e-12);
+    EXPECT_NEAR(values(1), eps, 1e-12);
+    EXPECT_NEAR(values(2), 2.0, 1e-12);
+    EXPECT_NEAR(values(3), 7.0, 1e-12);
+}
+
+TEST(HessianProjection, AbsMirrorsNegativeEigenvalues) {
+    std::mt19937 rng(2);
+    Mat<4> h = random_symmetric(rng, Vec<4>(-5.0, -0.1, 2.0, 7.0));
+    EXPECT_TRUE(project_hessian_block<4>(h, ProjectionMode::kAbs, 1e-8));
+    const Vec<4> values = Eigen::SelfAdjointEigenSolver<Mat<4>>(h).eigenvalues();
+    EXPECT_NEAR(values(0), 0.1, 1e-12);
+    EXPECT_NEAR(values(1), 2.0, 1e-12);
+    EXPECT_NEAR(values(2), 5.0, 1e-12);
+    EXPECT_NEAR(values(3), 7.0, 1e-12);
+}
+
+TEST(HessianProjection, ShiftAddsAMultipleOfTheIdentity) {
+    std::mt19937 rng(3);
+    const Mat<4> original = random_symmetric(rng, Vec<4>(-5.0, -0.1, 2.0, 7.0));
+    Mat<4> h = original;
+    EXPECT_TRUE(project_hessian_block<4>(h, ProjectionMode::kShift, 1e-8));
+    EXPECT_NEAR(smallest_eigenvalue(h), 1e-8, 1e-11);
+    const Mat<4> difference = h - original;
+    EXPECT_TRUE(difference.isApprox((5.0 + 1e-8) * Mat<4>::Identity(), 1e-12));
+}
+
+TEST(HessianProjection, PositiveDefiniteBlockIsUnchanged) {
+    std::mt19937 rng(4);
+    for (ProjectionMode mode :
+         {ProjectionMode::kClamp, ProjectionMode::kAbs, ProjectionMode::kShift}) {
+        const Mat<4> original = random_symmetric(rng, Vec<4>(0.5, 1.0, 2.0, 3.0));
+        Mat<4> h = original;
+        project_hessian_block<4>(h, mode, 1e-8);
+        EXPECT_TRUE(h.isApprox(original, 1e-13)) << to_string(mode);
+    }
+}
+
+TEST(HessianProjection, DiagonallyDominantBlockIsSkippedExactly) {
+    Mat<4> h;
+    h << 4, 1, -1, 0.5, 1, 5, 2, 1, -1, 2, 6, -2, 0.5, 1, -2, 7;
+    const Mat<4> original = h;
+    EXPECT_TRUE(is_diagonally_dominant_above<4>(h, 1e-8));
+    EXPECT_FALSE(project_hessian_block<4>(h, ProjectionMode::kClamp, 1e-8));
+    EXPECT_EQ(h, original);
+}
+
+TEST(HessianProjection, NoneLeavesIndefiniteBlock) {
+    std::mt19937 rng(5);
+    const Mat<4> original = random_symmetric(rng, Vec<4>(-1.0, 1.0, 2.0, 3.0));
+    Mat<4> h = original;
+    EXPECT_FALSE(project_hessian_block<4>(h, ProjectionMode::kNone, 1e-8));
+    EXPECT_EQ(h, original);
+}
+
+}  // namespace
+}  // namespace sa

@@ -1,0 +1,60 @@
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "optim/linear_solver.h"
+
+namespace sa {
+namespace {
+
+// Lower triangle of a 1D Laplacian plus `diagonal` * I: SPD for diagonal > 0, indefinite for
+// sufficiently negative diagonal.
+Eigen::SparseMatrix<double> laplacian_lower(int n, double diagonal) {
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int i = 0; i < n; ++i) {
+        entries.emplace_back(i, i, 2.0 + diagonal);
+        if (i + 1 < n) entries.emplace_back(i + 1, i, -1.0);
+    }
+    Eigen::SparseMatrix<double> m(n, n);
+    m.setFromTriplets(entries.begin(), entries.end());
+    return m;
+}
+
+class LinearSolverTest : public ::testing::TestWithParam<LinearSolverType> {};
+
+TEST_P(LinearSolverTest, SolvesAPositiveDefiniteSystem) {
+    const int n = 500;
+    const Eigen::SparseMatrix<double> lower = laplacian_lower(n, 0.01);
+    const Eigen::SparseMatrix<double> full =
+        lower.selfadjointView<Eigen::Lower>() *
+        Eigen::SparseMatrix<double>(Eigen::VectorXd::Ones(n).asDiagonal());
+    LinearSolver solver(GetParam());
+    solver.analyze(lower);
+    ASSERT_EQ(solver.factorize(lower), FactorizationStatus::kSuccess);
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 1.0);
+    const Eigen::VectorXd x = solver.solve(b);
+    EXPECT_LT((full * x - b).norm() / b.norm(), 1e-10);
+    EXPECT_EQ(solver.active_type(), GetParam());
+}
+
+TEST_P(LinearSolverTest, ReportsAnIndefiniteMatrix) {
+    const Eigen::SparseMatrix<double> lower = laplacian_lower(50, -3.0);
+    LinearSolver solver(GetParam());
+    solver.analyze(lower);
+    EXPECT_EQ(solver.factorize(lower), FactorizationStatus::kNotPositiveDefinite);
+    // The same pattern factors once the matrix is made definite.
+    EXPECT_EQ(solver.factorize(laplacian_lower(50, 0.5)), FactorizationStatus::kSuccess);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllSolvers, LinearSolverTest,
+                         ::testing::Values(LinearSolverType::kCholmodSupernodal,
+                                           LinearSolverType::kCholmodSimplicial,
+                                           LinearSolverType::kEigenLDLT),
+                         [](const auto& info) {
+                             std::string name = to_string(info.param);
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });
+
+}  // namespace
+}  // namespace sa
