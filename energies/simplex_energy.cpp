@@ -1,0 +1,143 @@
+#include "energies/simplex_energy.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "energies/polynomial_roots.h"
+#include "optim/errors.h"
+
+namespace sa {
+
+namespace {
+
+/// Coefficients of det(A + t B) = c0 + c1 t + c2 t^2 (+ c3 t^3).
+template <int D>
+std::array<double, 4> determinant_polynomial(const Mat<D>& A, const Mat<D>& B) {
+    if constexpr (D == 2) {
+        const double c0 = A.determinant(), c2 = B.determinant();
+        return {c0, (A + B).determinant() - c0 - c2, c2, 0.0};
+    } else {
+        // det(A + tB) = det A + t <cof A, B> + t^2 <A, cof B> + t^3 det B.
+        auto cofactor = [](const Mat<3>& M) {
+            Mat<3> C;
+            C.col(0) = M.col(1).cross(M.col(2));
+            C.col(1) = M.col(2).cross(M.col(0));
+            C.col(2) = M.col(0).cross(M.col(1));
+            return C;
+        };
+        return {A.determinant(), cofactor(A).cwiseProduct(B).sum(),
+                A.cwiseProduct(cofactor(B)).sum(), B.determinant()};
+    }
+}
+
+}  // namespace
+
+void SimplexEnergyOptions::validate() const {
+    auto fail = [](const std::string& field, double value, const std::string& rule) {
+        std::ostringstream msg;
+        msg << "SimplexEnergyOptions." << field << " = " << value << ": " << rule;
+        throw InvalidArgumentError(msg.str());
+    };
+    if (barrier_distortion != DistortionType::kConformal &&
+        barrier_distortion != DistortionType::kVolumetric &&
+        barrier_distortion != DistortionType::kIsometric) {
+        throw InvalidArgumentError("SimplexEnergyOptions.barrier_distortion = " +
+                                   to_string(barrier_distortion) +
+                                   ": must be conformal, volumetric or isometric");
+    }
+    if (!(barrier.bound > 1.0)) fail("barrier.bound", barrier.bound, "must be > 1 (or infinite)");
+    if (!(barrier.s > 0.0) || !std::isfinite(barrier.s)) fail("barrier.s", barrier.s, "must be > 0");
+    if (!(mu >= 0.0) || !std::isfinite(mu)) fail("mu", mu, "must be finite and >= 0");
+    if (!(gamma >= 0.0 && gamma <= 1.0)) fail("gamma", gamma, "must be in [0, 1]");
+}
+
+template <int D>
+SimplexEnergy<D>::SimplexEnergy(SimplexEnergyOptions options, std::vector<double> weights,
+                                 std::vector<Mat<D>> references)
+    : options_(std::move(options)), weights_(std::move(weights)), references_(std::move(references)) {
+    options_.validate();
+    if (options_.mapping_distortion == DistortionType::kDifference &&
+        references_.size() != weights_.size()) {
+        throw InvalidArgumentError("SimplexEnergy: the difference distortion needs one reference "
+                                   "matrix per simplex (" + std::to_string(weights_.size()) +
+                                   " simplices, " + std::to_string(references_.size()) +
+                                   " references)");
+    }
+    sigma_sum_ = options_.mapping_distortion && needs_sigma_sum(*options_.mapping_distortion);
+}
+
+template <int D>
+double SimplexEnergy<D>::barrier_distortion(const Mat<D>& A) const {
+    const MatrixInvariants<double> m = matrix_invariants<D>(A, false);
+    if (!(m.J > 0.0)) return kInfinity;
+    return distortion<D>(options_.barrier_distortion, m, options_.gamma);
+}
+
+template <int D>
+double SimplexEnergy<D>::value(Index i, const Vec<arity>& a) const {
+    const Mat<D> A = unvec<D>(a);
+    const MatrixInvariants<double> m = matrix_invariants<D>(A, sigma_sum_);
+    if (!(m.J > 0.0)) return kInfinity;
+    const double d = distortion<D>(options_.barrier_distortion, m, options_.gamma);
+    if (!(d < options_.barrier.bound)) return kInfinity;
+    double e = barrier(d, options_.barrier);
+    if (options_.mapping_distortion) {
+        const DistortionType type = *options_.mapping_distortion;
+        const double dm = type == DistortionType::kDifference
+                              ? (A - references_[i]).squaredNorm()
+                              : distortion<D>(type, m, options_.gamma);
+        e += options_.mu * weights_[i] * dm;
+    }
+    return std::isfinite(e) ? e : kInfinity;
+}
+
+template <int D>
+double SimplexEnergy<D>::value_gradient_hessian(Index i, const Vec<arity>& a, Vec<arity>& gradient,
+                                                Mat<arity>& hessian) const {
+    const Mat<D> A = unvec<D>(a);
+    const MatrixInvariants<Dual<arity>> m = matrix_invariants_with_derivatives<D>(A, sigma_sum_);
+    if (!(m.J.value > 0.0)) return kInfinity;
+    const Dual<arity> d = distortion<D>(options_.barrier_distortion, m, options_.gamma);
+    if (!(d.value < options_.barrier.bound)) return kInfinity;
+    Dual<arity> e = barrier(d, options_.barrier);
+    if (options_.mapping_distortion) {
+        const DistortionType type = *options_.mapping_distortion;
+        const Dual<arity> dm = type == DistortionType::kDifference
+                                   ? difference_distortion<D>(A, references_[i])
+                                   : distortion<D>(type, m, options_.gamma);
+        e += (options_.mu * weights_[i]) * dm;
+    }
+    gradient = e.gradient;
+    hessian = e.hessian;
+    return std::isfinite(e.value) ? e.value : kInfinity;
+}
+
+template <int D>
+double SimplexEnergy<D>::max_step(Index, const Vec<arity>& a, const Vec<arity>& da) const {
+    const Mat<D> A = unvec<D>(a), B = unvec<D>(da);
+    const auto det = determinant_polynomial<D>(A, B);
+    double step = smallest_positive_root(det[0], det[1], det[2], det[3]);
+    const double K = options_.barrier.bound;
+    if (K < kInfinity) {
+        if (options_.barrier_distortion == DistortionType::kConformal && D == 2) {
+            // |A + tB|^2 - 2 K det(A + tB) reaches 0 where the conformal distortion reaches K.
+            const double c0 = A.squaredNorm() - 2.0 * K * det[0];
+            const double c1 = 2.0 * A.cwiseProduct(B).sum() - 2.0 * K * det[1];
+            const double c2 = B.squaredNorm() - 2.0 * K * det[2];
+            step = std::min(step, smallest_positive_root(c0, c1, c2));
+        } else if (options_.barrier_distortion == DistortionType::kVolumetric) {
+            // (J + 1/J) / 2 < K  <=>  K - sqrt(K^2 - 1) < J < K + sqrt(K^2 - 1).
+            const double r = std::sqrt(K * K - 1.0);
+            for (double threshold : {K - r, K + r}) {
+                step = std::min(step, smallest_positive_root(det[0] - threshold, det[1], det[2],
+                                                             det[3]));
+            }
+        }
+    }
+    return step;
+}
+
+template class SimplexEnergy<2>;
+template class SimplexEnergy<3>;
+
+}  // namespace sa
