@@ -1,0 +1,4 @@
+# Sources of geometry/io, included by geometry/CMakeLists.txt.
+set(SA_GEOMETRY_IO_SOURCES
+    io/atomic_file.cpp
+)
