@@ -26,7 +26,7 @@ struct Shape {
     int nx, ny;  // grid cells
     std::vector<std::array<Index, 4>> simplices;
     std::vector<std::array<Index, 8>> couplings;
-    std::vector<sa::Mat<2>> moments;
+    std::vector<sa::SharedFacetEdges<2>> facets;
     Eigen::VectorXd variables;
 };
 
@@ -51,14 +51,16 @@ Shape make_shape(long triangles) {
         std::array<Index, 8> e;
         for (int k = 0; k < 4; ++k) e[k] = 4 * a + k, e[4 + k] = 4 * b + k;
         s.couplings.push_back(e);
-        s.moments.push_back(sa::edge_moment<2>({edge}));
+        sa::SharedFacetEdges<2> facet;
+        facet.in_i = facet.in_j = edge.normalized();
+        s.facets.push_back(facet);
     };
     for (int j = 0; j < s.ny; ++j) {
         for (int i = 0; i < s.nx; ++i) {
             const int c = j * s.nx + i;
-            couple(2 * c, 2 * c + 1, {1.0, 1.0});                                  // diagonal
-            if (i + 1 < s.nx) couple(2 * c, 2 * (c + 1) + 1, {0.0, 1.0});           // right
-            if (j + 1 < s.ny) couple(2 * c + 1, 2 * (c + s.nx), {1.0, 0.0});        // top
+            couple(2 * c, 2 * c + 1, {1.0, 1.0});                             // diagonal
+            if (i + 1 < s.nx) couple(2 * c, 2 * (c + 1) + 1, {0.0, 1.0});     // right
+            if (j + 1 < s.ny) couple(2 * c + 1, 2 * (c + s.nx), {1.0, 0.0});  // top
         }
     }
     return s;
@@ -94,9 +96,12 @@ int main(int argc, char** argv) {
         sa::set_blas_threads(threads);
         sa::Problem problem(shape.variables);
         sa::SimplexEnergyOptions options;  // conformal barrier, K = inf, E_m = 0
-        problem.add_term("barrier", sa::SimplexEnergy<2>(options, std::vector<double>(shape.simplices.size(), 1.0)),
-                         shape.simplices);
-        problem.add_term("edge assembly", sa::EdgeAssemblyEnergy<2>(shape.moments), shape.couplings, 1e4);
+        problem.add_term(
+            "barrier",
+            sa::SimplexEnergy<2>(options, std::vector<double>(shape.simplices.size(), 1.0)),
+            shape.simplices);
+        problem.add_term("edge assembly", sa::EdgeAssemblyEnergy<2>(shape.facets), shape.couplings,
+                         1e4);
 
         sa::NewtonOptions newton;
         newton.num_threads = threads;

@@ -67,18 +67,27 @@ S distortion(DistortionType type, const MatrixInvariants<S>& m, double gamma = 0
     auto volumetric = [&]() -> S { return 0.5 * (J + 1.0 / J); };
     auto asap = [&]() -> S { return 2.0 * (double(D) * I1 - m.sigma_sum * m.sigma_sum); };
     switch (type) {
-        case DistortionType::kConformal: return conformal();
-        case DistortionType::kVolumetric: return volumetric();
-        case DistortionType::kIsometric: return gamma * conformal() + (1.0 - gamma) * volumetric();
-        case DistortionType::kDirichlet: return I1;
-        case DistortionType::kSymmetricDirichlet: return I1 + inverse_norm2();
+        case DistortionType::kConformal:
+            return conformal();
+        case DistortionType::kVolumetric:
+            return volumetric();
+        case DistortionType::kIsometric:
+            return gamma * conformal() + (1.0 - gamma) * volumetric();
+        case DistortionType::kDirichlet:
+            return I1;
+        case DistortionType::kSymmetricDirichlet:
+            return I1 + inverse_norm2();
         case DistortionType::kGreenLagrange:
             // sum s^4 = I1^2 - 2 I2; so sum (s^2 - 1)^2 = I1^2 - 2 I2 - 2 I1 + D.
             return I1 * I1 - 2.0 * m.I2 - 2.0 * I1 + double(D);
-        case DistortionType::kAsap: return asap();
-        case DistortionType::kArap: return I1 - 2.0 * m.sigma_sum + double(D);
-        case DistortionType::kLscm: return 0.5 * asap();
-        case DistortionType::kDifference: break;
+        case DistortionType::kAsap:
+            return asap();
+        case DistortionType::kArap:
+            return I1 - 2.0 * m.sigma_sum + double(D);
+        case DistortionType::kLscm:
+            return 0.5 * asap();
+        case DistortionType::kDifference:
+            break;
     }
     return S(kInfinity);
 }

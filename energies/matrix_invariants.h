@@ -34,7 +34,7 @@ MatrixInvariants<double> matrix_invariants(const Mat<D>& A, bool with_sigma_sum)
 /// Invariants of A with gradients and Hessians with respect to vec(A).
 template <int D>
 MatrixInvariants<Dual<D * D>> matrix_invariants_with_derivatives(const Mat<D>& A,
-                                                                  bool with_sigma_sum);
+                                                                 bool with_sigma_sum);
 
 /// A as a D x D matrix from its column-major vector.
 template <int D>

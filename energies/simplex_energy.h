@@ -35,7 +35,7 @@ struct SimplexEnergyOptions {
 
 template <int D>
 class SimplexEnergy {
-public:
+  public:
     static constexpr int arity = D * D;
 
     /// `weights` holds w_i per simplex (its rest volume, typically); `references` holds A0_i per
@@ -52,7 +52,7 @@ public:
     double barrier_distortion(const Mat<D>& A) const;
     const SimplexEnergyOptions& options() const { return options_; }
 
-private:
+  private:
     SimplexEnergyOptions options_;
     std::vector<double> weights_;
     std::vector<Mat<D>> references_;

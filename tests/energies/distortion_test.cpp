@@ -47,16 +47,26 @@ double reference_distortion(DistortionType type, const Mat<D>& A) {
         conformal = (sum_sq * inv_sq - 1.0) / 8.0;
     }
     switch (type) {
-        case DistortionType::kConformal: return conformal;
-        case DistortionType::kVolumetric: return volumetric;
-        case DistortionType::kIsometric: return 0.5 * conformal + 0.5 * volumetric;
-        case DistortionType::kDirichlet: return sum_sq;
-        case DistortionType::kSymmetricDirichlet: return sum_sq + inv_sq;
-        case DistortionType::kGreenLagrange: return gl;
-        case DistortionType::kAsap: return asap;
-        case DistortionType::kArap: return arap;
-        case DistortionType::kLscm: return 0.5 * asap;
-        case DistortionType::kDifference: break;
+        case DistortionType::kConformal:
+            return conformal;
+        case DistortionType::kVolumetric:
+            return volumetric;
+        case DistortionType::kIsometric:
+            return 0.5 * conformal + 0.5 * volumetric;
+        case DistortionType::kDirichlet:
+            return sum_sq;
+        case DistortionType::kSymmetricDirichlet:
+            return sum_sq + inv_sq;
+        case DistortionType::kGreenLagrange:
+            return gl;
+        case DistortionType::kAsap:
+            return asap;
+        case DistortionType::kArap:
+            return arap;
+        case DistortionType::kLscm:
+            return 0.5 * asap;
+        case DistortionType::kDifference:
+            break;
     }
     return 0.0;
 }
@@ -75,8 +85,12 @@ void check_all_distortions() {
     }
 }
 
-TEST(Distortion, ValuesMatchSingularValueDefinitions2D) { check_all_distortions<2>(); }
-TEST(Distortion, ValuesMatchSingularValueDefinitions3D) { check_all_distortions<3>(); }
+TEST(Distortion, ValuesMatchSingularValueDefinitions2D) {
+    check_all_distortions<2>();
+}
+TEST(Distortion, ValuesMatchSingularValueDefinitions3D) {
+    check_all_distortions<3>();
+}
 
 template <int D>
 void check_equal_one_at_similarity() {
@@ -109,9 +123,9 @@ void check_energy_derivatives(const SimplexEnergyOptions& options, const std::st
         Mat<D> A = random_positive_matrix<D>(rng);
         if (energy.barrier_distortion(A) >= options.barrier.bound) A = Mat<D>::Identity() * 1.1;
         const DerivativeCheck check = check_derivatives(energy, i, vec<D>(A), 1e-6);
-        EXPECT_TRUE(check.passes(2e-6)) << label << " D=" << D << ": value " << check.value
-                                        << ", gradient error " << check.gradient_error
-                                        << ", Hessian error " << check.hessian_error;
+        EXPECT_TRUE(check.passes(2e-6))
+            << label << " D=" << D << ": value " << check.value << ", gradient error "
+            << check.gradient_error << ", Hessian error " << check.hessian_error;
     }
 }
 
@@ -174,7 +188,7 @@ void check_max_step(const SimplexEnergyOptions& options) {
     const SimplexEnergy<D> energy(options, {1.0});
     int hit = 0;
     for (int trial = 0; trial < 200; ++trial) {
-        const Vec<D * D> a = vec<D>(random_positive_matrix<D>(rng));
+        const Vec<D* D> a = vec<D>(random_positive_matrix<D>(rng));
         if (!std::isfinite(energy.value(0, a))) continue;
         Vec<D * D> da;
         for (int k = 0; k < D * D; ++k) da[k] = normal(rng);
