@@ -2,6 +2,7 @@
 // Basic index and small fixed-size matrix types shared by every layer.
 
 #include <Eigen/Core>
+#include <Eigen/LU>  // determinant() and inverse() of the fixed-size matrices used everywhere
 #include <cstdint>
 #include <limits>
 

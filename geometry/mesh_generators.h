@@ -1,0 +1,17 @@
+#pragma once
+// Generated meshes, for tests, demos and benchmarks.
+
+#include "geometry/simplicial_mesh.h"
+
+namespace sa {
+
+/// The unit square [0, 1]^2 cut into nx x ny cells of two triangles each (2D vertices,
+/// counter-clockwise triangles). Vertex (i, j) has index j * (nx + 1) + i.
+SimplicialMesh grid_triangles(int nx, int ny);
+
+/// The box [0, nx/n] x [0, ny/n] x [0, nz/n], n = max(nx, ny, nz), cut into nx x ny x nz cubes
+/// of six positively oriented tetrahedra each (Kuhn subdivision, conforming across cubes).
+/// Vertex (i, j, k) has index (k * (ny + 1) + j) * (nx + 1) + i.
+SimplicialMesh grid_tetrahedra(int nx, int ny, int nz);
+
+}  // namespace sa

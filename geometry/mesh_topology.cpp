@@ -1,0 +1,146 @@
+#include "geometry/mesh_topology.h"
+
+#include <algorithm>
+#include <numeric>
+#include <sstream>
+
+#include "optim/errors.h"
+
+namespace sa {
+
+namespace {
+struct FacetKey {
+    std::array<Index, 3> vertices;
+    Index simplex;
+    int opposite;
+    bool operator<(const FacetKey& o) const {
+        return vertices != o.vertices ? vertices < o.vertices : simplex < o.simplex;
+    }
+};
+}  // namespace
+
+MeshTopology mesh_topology(const SimplicialMesh& mesh, const std::string& source) {
+    MeshTopology t;
+    const int d = mesh.simplex_dimension();
+    const int k = d + 1;
+    const Index n = mesh.num_simplices();
+    const Index nv = mesh.num_vertices();
+    t.dimension = d;
+
+    std::vector<FacetKey> facets;
+    facets.reserve(std::size_t(n) * k);
+    for (Index s = 0; s < n; ++s) {
+        for (int o = 0; o < k; ++o) {
+            FacetKey f{{-1, -1, -1}, s, o};
+            int m = 0;
+            for (int a = 0; a < k; ++a) {
+                if (a != o) f.vertices[m++] = mesh.simplices(s, a);
+            }
+            std::sort(f.vertices.begin(), f.vertices.begin() + d);
+            facets.push_back(f);
+        }
+    }
+    std::sort(facets.begin(), facets.end());
+    t.neighbour.assign(std::size_t(n) * k, -1);
+    for (std::size_t i = 0; i < facets.size();) {
+        std::size_t j = i + 1;
+        while (j < facets.size() && facets[j].vertices == facets[i].vertices) ++j;
+        if (j - i == 1) {
+            t.boundary_facets.push_back(
+                {facets[i].simplex, facets[i].opposite, facets[i].vertices});
+        } else if (j - i == 2) {
+            const FacetKey &a = facets[i], &b = facets[i + 1];
+            t.interior_facets.push_back(
+                {{a.simplex, b.simplex}, {a.opposite, b.opposite}, a.vertices});
+            t.neighbour[std::size_t(a.simplex) * k + a.opposite] = b.simplex;
+            t.neighbour[std::size_t(b.simplex) * k + b.opposite] = a.simplex;
+        } else {
+            std::ostringstream msg;
+            msg << source << ": the mesh is not manifold: " << (d == 2 ? "edge (" : "triangle (");
+            for (int a = 0; a < d; ++a) msg << (a ? ", " : "") << facets[i].vertices[a];
+            msg << ") is shared by " << (j - i) << " simplices (";
+            for (std::size_t m = i; m < j; ++m) msg << (m > i ? ", " : "") << facets[m].simplex;
+            msg << ")";
+            throw InputError(msg.str());
+        }
+        i = j;
+    }
+
+    if (d == 2 && mesh.ambient_dimension() == 3) {
+        // Consistent orientation: a shared edge runs in opposite directions in its two triangles.
+        auto runs_forward = [&](Index s, Index a, Index b) {
+            for (int c = 0; c < 3; ++c) {
+                if (mesh.simplices(s, c) == a && mesh.simplices(s, (c + 1) % 3) == b) return true;
+            }
+            return false;
+        };
+        for (const InteriorFacet& f : t.interior_facets) {
+            const Index a = f.vertices[0], b = f.vertices[1];
+            if (runs_forward(f.simplex[0], a, b) == runs_forward(f.simplex[1], a, b)) {
+                std::ostringstream msg;
+                msg << source << ": triangles " << f.simplex[0] << " and " << f.simplex[1]
+                    << " are oriented inconsistently across edge (" << a << ", " << b << ")";
+                throw InputError(msg.str());
+            }
+        }
+    }
+
+    t.boundary_vertex.assign(nv, 0);
+    for (const BoundaryFacet& f : t.boundary_facets) {
+        for (int a = 0; a < d; ++a) t.boundary_vertex[f.vertices[a]] = 1;
+    }
+    t.used_vertex.assign(nv, 0);
+    t.vertex_begin.assign(nv + 1, 0);
+    for (Index s = 0; s < n; ++s) {
+        for (int a = 0; a < k; ++a) {
+            t.used_vertex[mesh.simplices(s, a)] = 1;
+            ++t.vertex_begin[mesh.simplices(s, a) + 1];
+        }
+    }
+    std::partial_sum(t.vertex_begin.begin(), t.vertex_begin.end(), t.vertex_begin.begin());
+    t.simplices_of_vertex.resize(t.vertex_begin[nv]);
+    std::vector<Index> cursor(t.vertex_begin.begin(), t.vertex_begin.end() - 1);
+    for (Index s = 0; s < n; ++s) {
+        for (int a = 0; a < k; ++a) t.simplices_of_vertex[cursor[mesh.simplices(s, a)]++] = s;
+    }
+
+    for (Index s = 0; s < n; ++s) {
+        for (int a = 0; a < k; ++a) {
+            for (int b = a + 1; b < k; ++b) {
+                Index u = mesh.simplices(s, a), v = mesh.simplices(s, b);
+                t.edges.push_back({std::min(u, v), std::max(u, v)});
+            }
+        }
+    }
+    std::sort(t.edges.begin(), t.edges.end());
+    t.edges.erase(std::unique(t.edges.begin(), t.edges.end()), t.edges.end());
+    return t;
+}
+
+std::vector<Index> MeshTopology::simplex_components(Index* count) const {
+    const Index n = static_cast<Index>(neighbour.size() / (dimension + 1));
+    std::vector<Index> component(n, -1);
+    Index c = 0;
+    std::vector<Index> stack;
+    for (Index seed = 0; seed < n; ++seed) {
+        if (component[seed] >= 0) continue;
+        component[seed] = c;
+        stack.push_back(seed);
+        while (!stack.empty()) {
+            const Index s = stack.back();
+            stack.pop_back();
+            for (int k = 0; k <= dimension; ++k) {
+                const Index t = neighbour_of(s, k);
+                if (t >= 0 && component[t] < 0) {
+                    component[t] = c;
+                    stack.push_back(t);
+                }
+            }
+        }
+        ++c;
+    }
+    if (count != nullptr) *count = c;
+    return component;
+}
+
+}  // namespace sa
