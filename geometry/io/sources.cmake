@@ -1,4 +1,6 @@
 # Sources of geometry/io, included by geometry/CMakeLists.txt.
 set(SA_GEOMETRY_IO_SOURCES
     io/atomic_file.cpp
+    io/text_reader.cpp
+    io/write_checks.cpp
 )
