@@ -3,6 +3,7 @@ set(SA_GEOMETRY_IO_SOURCES
     io/atomic_file.cpp
     io/obj_io.cpp
     io/off_io.cpp
+    io/tetgen_io.cpp
     io/text_reader.cpp
     io/write_checks.cpp
 )
