@@ -1,6 +1,7 @@
 # Sources of geometry/io, included by geometry/CMakeLists.txt.
 set(SA_GEOMETRY_IO_SOURCES
     io/atomic_file.cpp
+    io/dmat_io.cpp
     io/index_list_io.cpp
     io/medit_io.cpp
     io/obj_io.cpp
