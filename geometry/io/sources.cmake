@@ -6,6 +6,7 @@ set(SA_GEOMETRY_IO_SOURCES
     io/medit_io.cpp
     io/obj_io.cpp
     io/off_io.cpp
+    io/openmesh_io.cpp
     io/problem_io.cpp
     io/tetgen_io.cpp
     io/text_reader.cpp
