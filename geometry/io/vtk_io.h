@@ -1,0 +1,55 @@
+#pragma once
+// VTK meshes through the VTK library: legacy .vtk (UNSTRUCTURED_GRID or POLYDATA) and XML .vtu
+// (unstructured grid).
+//
+// Read: all cells VTK_TRIANGLE (5) or all VTK_TETRA (10). A triangle mesh whose z coordinates are
+// all 0 is read as 2D. Written: an unstructured grid with double-precision points (2D positions
+// padded with z = 0), the cells, and optional point and cell data arrays; .vtk in ASCII with the
+// classic `CELLS`/`CELL_TYPES` layout (legacy file version 4.2, which older readers understand)
+// and 17 significant digits (written here: VTK's legacy writer rounds to 11), arrays as `FIELD`
+// data; .vtu by VTK, binary appended (VTK's default, zlib-compressed).
+//
+// VTK reports problems through its global output window; these functions capture that text while
+// they run (nothing is printed) and turn errors into exceptions.
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "geometry/io/mesh_file.h"
+
+namespace sa {
+
+/// A named data array: one row per point (or cell), one column per component.
+struct DataArray {
+    std::string name;
+    Eigen::MatrixXd values;
+    /// Written as vtkIntArray (values must then be integers) instead of vtkDoubleArray.
+    bool integer = false;
+};
+
+/// Reads a legacy .vtk file into `mesh`: vertices #V x 3 (#V x 2 for a triangle mesh with all
+/// z = 0), simplices #S x 3 or #S x 4. Throws InputError `FILE: ...` when VTK cannot read the file
+/// (with VTK's message), when it holds another dataset type, or naming the first cell that is not
+/// a triangle or tetrahedron (or of another type than the first cell) and its type.
+MeshFile read_vtk(const std::string& path);
+
+/// Reads an XML .vtu file, as read_vtk().
+MeshFile read_vtu(const std::string& path);
+
+/// Writes a legacy ASCII .vtk unstructured grid: `positions` #V x 2 or #V x 3, `simplices`
+/// #S x 3 (VTK_TRIANGLE) or #S x 4 (VTK_TETRA, 3D only), `point_data` arrays of #V rows and
+/// `cell_data` arrays of #S rows (non-empty, distinct names). Throws InvalidArgumentError on
+/// arrays of the wrong shape, an index out of range, a non-integer value in an integer array or a
+/// bad array name, and InputError when the file cannot be written (nothing is left at `path`
+/// then).
+void write_vtk(const std::string& path, const Eigen::MatrixXd& positions,
+               const Eigen::MatrixXi& simplices, const std::vector<DataArray>& point_data = {},
+               const std::vector<DataArray>& cell_data = {});
+
+/// Writes an XML .vtu unstructured grid (binary, appended), as write_vtk().
+void write_vtu(const std::string& path, const Eigen::MatrixXd& positions,
+               const Eigen::MatrixXi& simplices, const std::vector<DataArray>& point_data = {},
+               const std::vector<DataArray>& cell_data = {});
+
+}  // namespace sa
