@@ -4,6 +4,7 @@ set(SA_GEOMETRY_IO_SOURCES
     io/dmat_io.cpp
     io/index_list_io.cpp
     io/medit_io.cpp
+    io/mesh_file.cpp
     io/obj_io.cpp
     io/off_io.cpp
     io/openmesh_io.cpp
