@@ -18,8 +18,9 @@ AtomicFile::AtomicFile(std::string path, bool binary) : path_(std::move(path)) {
     if (!std::filesystem::is_directory(folder)) {
         throw InputError(path_ + ": cannot write, folder '" + folder.string() + "' does not exist");
     }
-    temporary_ =
-        (folder / ("." + target.filename().string() + ".tmp-" + std::to_string(getpid()))).string();
+    std::string name = ".";  // built with append: GCC 12 warns falsely (-Wrestrict) on a + chain
+    name.append(target.filename().string()).append(".tmp-").append(std::to_string(getpid()));
+    temporary_ = (folder / name).string();
     stream_.open(temporary_, binary ? std::ios::out | std::ios::binary : std::ios::out);
     if (!stream_) {
         throw InputError(path_ + ": cannot write (" + std::strerror(errno) + ")");

@@ -1,0 +1,109 @@
+#pragma once
+// Simplex Assembly (Fu and Liu 2016): an inversion-free map of a simplicial mesh with handles.
+//
+//   1. normalize: rest and map coordinates centred, scaled by the rest bounding-box diagonal;
+//   2. disassemble: the initial map's linear parts A_i^0 are projected into the barrier's feasible
+//      set (closest similarity or rotation, section 4.2); T_i^0 from the initial map;
+//   3. assemble: minimize mu E_m + E_C + lambda E~_assembly (Eq. 10) with projected Newton, lambda
+//      following section 4.4's schedule, until E~_assembly < 1e-12 and E changes by less than 1e-8
+//      (relative, within a step), or 200 iterations;
+//   4. recover: translations by gluing (Appendix), vertex positions by Eq. 6 with handles fixed;
+//   5. verify the recovered positions: inverted and degenerate simplices (against each rest
+//      orientation), handle error, distortion and the bound. Success means no inverted or
+//      degenerate simplex and every handle within tolerance, measured on the output.
+//
+// Triangles map to the plane (from a planar rest shape or from a surface in space), tetrahedra to
+// space. Bad input throws InputError or InvalidArgumentError; numerical outcomes are reported in
+// the result.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "frontends/simplex_assembly/simplex_assembly_options.h"
+#include "geometry/map_quality.h"
+#include "geometry/simplicial_mesh.h"
+#include "optim/logger.h"
+#include "optim/newton_summary.h"
+
+namespace sa {
+
+struct MappingProblem {
+    SimplicialMesh mesh;           ///< the rest shape
+    Eigen::MatrixXd initial;       ///< #V x d initial map (d = simplex dimension)
+    std::vector<Index> handles;    ///< vertices with prescribed positions
+    Eigen::MatrixXd targets;       ///< #handles x d; empty: the handles' rows of `initial`
+    std::string source = "input";  ///< names the input in error messages
+};
+
+/// One iteration of the assembly, as the paper's Figure 4 plots it.
+struct AssemblyRecord {
+    int iteration = 0;
+    double energy = 0.0;    ///< E at the lambda of this step
+    double assembly = 0.0;  ///< E~_assembly (unweighted)
+    double barrier = 0.0;   ///< mu E_m + E_C
+    double lambda = 0.0;    ///< lambda used for this step
+    double step = -1.0;     ///< accepted step length (-1 at iteration 0)
+    int line_search_trials = -1;
+    double time = 0.0;  ///< seconds since the optimization started
+};
+
+struct StageTimes {
+    double setup = 0.0;         ///< normalization, frames, topology, Steiner tree, problem
+    double disassembly = 0.0;   ///< initial linear parts and their projection
+    double optimization = 0.0;  ///< the Newton iterations
+    double recovery = 0.0;      ///< gluing and Eq. 6
+    double verification = 0.0;  ///< metrics of the output positions
+    double total = 0.0;
+};
+
+/// What was checked on the output positions.
+struct Verification {
+    Index simplices = 0;
+    Index inverted = 0;
+    Index degenerate = 0;
+    Index handles = 0;
+    double handle_error = 0.0;      ///< largest |x_h - target_h|, in the map's units
+    double handle_tolerance = 0.0;  ///< handle_tolerance times the initial map's diagonal
+    double bound = kInfinity;       ///< K
+    double max_distortion = 0.0;    ///< largest barrier distortion d of the output
+    bool passed() const {
+        return inverted == 0 && degenerate == 0 && handle_error <= handle_tolerance;
+    }
+    bool within_bound() const { return max_distortion <= bound; }
+    /// One sentence: what was measured and the outcome.
+    std::string describe() const;
+};
+
+struct SimplexAssemblyResult {
+    Eigen::MatrixXd positions;  ///< #V x d output map
+    bool success = false;       ///< verification passed
+    std::string message;        ///< the outcome in a sentence or two
+    bool assembled = false;     ///< E~_assembly reached the tolerance
+    double final_assembly = 0.0;
+    double final_lambda = 0.0;
+    Verification verification;
+    MapQuality initial_quality;  ///< of the initial map
+    MapQuality final_quality;    ///< of the output positions
+    NewtonSummary newton;
+    std::vector<AssemblyRecord> iterations;
+    StageTimes times;
+    Index num_variables = 0;
+    Index num_translation_simplices = 0;  ///< |Omega_s| for r-SA, N for f-SA
+    Index num_tree_edges = 0;
+    Index num_anchored_simplices = 0;
+};
+
+struct SimplexAssemblyObserver {
+    /// Receives a header and one progress row per iteration.
+    Logger logger;
+    /// Called before the first step and after each one with the disassembled simplices: row
+    /// (d + 1) s + k is the image of corner k of simplex s, in the map's units.
+    std::function<void(int iteration, const Eigen::MatrixXd& corners)> snapshot;
+};
+
+SimplexAssemblyResult run_simplex_assembly(const MappingProblem& problem,
+                                           const SimplexAssemblyOptions& options,
+                                           const SimplexAssemblyObserver& observer = {});
+
+}  // namespace sa

@@ -1,0 +1,66 @@
+#include "frontends/simplex_assembly/simplex_assembly_options.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "optim/errors.h"
+
+namespace sa {
+
+std::string to_string(Variant variant) {
+    switch (variant) {
+        case Variant::kReduced:
+            return "r-SA";
+        case Variant::kFull:
+            return "f-SA";
+        case Variant::kVertex:
+            return "v-SA";
+    }
+    return "unknown";
+}
+
+Variant parse_variant(const std::string& name) {
+    if (name == "r" || name == "reduced" || name == "r-SA") return Variant::kReduced;
+    if (name == "f" || name == "full" || name == "f-SA") return Variant::kFull;
+    if (name == "v" || name == "vertex" || name == "v-SA") return Variant::kVertex;
+    throw InvalidArgumentError("unknown variant '" + name + "' (expected r, f or v)");
+}
+
+Initialization SimplexAssemblyOptions::effective_initialization() const {
+    if (initialization) return *initialization;
+    return distortion == DistortionType::kConformal ? Initialization::kClosestSimilarity
+                                                    : Initialization::kClosestRotation;
+}
+
+void SimplexAssemblyOptions::validate() const {
+    auto fail = [](const char* field, double value, const char* rule) {
+        std::ostringstream msg;
+        msg << field << " = " << value << ": " << rule;
+        throw InvalidArgumentError(msg.str());
+    };
+    if (distortion != DistortionType::kConformal && distortion != DistortionType::kVolumetric &&
+        distortion != DistortionType::kIsometric) {
+        throw InvalidArgumentError("distortion = " + to_string(distortion) +
+                                   ": the barrier needs conformal, volumetric or isometric");
+    }
+    if (!(bound > 1.0)) fail("bound", bound, "must be > 1 (every barrier distortion is >= 1)");
+    if (!(s > 0.0) || !std::isfinite(s)) fail("s", s, "must be finite and > 0");
+    if (!(gamma >= 0.0 && gamma <= 1.0)) fail("gamma", gamma, "must be in [0, 1]");
+    if (!(mu >= 0.0) || !std::isfinite(mu)) fail("mu", mu, "must be finite and >= 0");
+    if (!(lambda_min > 0.0) || !std::isfinite(lambda_min))
+        fail("lambda_min", lambda_min, "must be finite and > 0");
+    if (!(lambda_max >= lambda_min) || !std::isfinite(lambda_max))
+        fail("lambda_max", lambda_max, "must be finite and >= lambda_min");
+    if (!(projection_epsilon >= 0.0))
+        fail("projection_epsilon", projection_epsilon, "must be >= 0");
+    if (!(translation_shift >= 0.0) || !std::isfinite(translation_shift))
+        fail("translation_shift", translation_shift, "must be finite and >= 0");
+    if (!(assembly_tolerance > 0.0)) fail("assembly_tolerance", assembly_tolerance, "must be > 0");
+    if (!(energy_tolerance >= 0.0)) fail("energy_tolerance", energy_tolerance, "must be >= 0");
+    if (max_iterations < 1) fail("max_iterations", max_iterations, "must be >= 1");
+    if (!(max_time_seconds > 0.0)) fail("max_time_seconds", max_time_seconds, "must be > 0");
+    if (!(handle_tolerance > 0.0)) fail("handle_tolerance", handle_tolerance, "must be > 0");
+    if (num_threads < 0) fail("num_threads", num_threads, "must be >= 0 (0 = all cores)");
+}
+
+}  // namespace sa

@@ -1,0 +1,85 @@
+#pragma once
+// Options of the Simplex Assembly driver, with the paper's constants as defaults (section 4.4).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "energies/distortion.h"
+#include "geometry/disassembly.h"
+#include "optim/hessian_projection.h"
+#include "optim/linear_solver.h"
+
+namespace sa {
+
+/// Which variables carry the translations (section 5.1, "Variants of simplex assembly").
+enum class Variant {
+    kReduced,  ///< r-SA: A_i for every simplex, T_p only on the Steiner-tree simplices (default)
+    kFull,     ///< f-SA: A_i and T_i for every simplex (Eqs. 2, 3)
+    kVertex,   ///< v-SA: per-simplex copies of the vertex positions
+};
+std::string to_string(Variant variant);
+/// "r", "f", "v" (or "reduced", "full", "vertex"); throws InvalidArgumentError otherwise.
+Variant parse_variant(const std::string& name);
+
+struct SimplexAssemblyOptions {
+    // The energy E = mu E_m + E_C + lambda E~_assembly (Eq. 10).
+    /// Distortion inside the barrier E_C: conformal, volumetric or isometric.
+    DistortionType distortion = DistortionType::kConformal;
+    /// K: the bound on that distortion; +inf for none.
+    double bound = kInfinity;
+    /// s in e^{s d}.
+    double s = 1.0;
+    /// gamma of the isometric distortion.
+    double gamma = 0.5;
+    /// d_m of E_m = sum_i w_i d_m(A_i) (w_i the rest volume); none: E_m = 0.
+    std::optional<DistortionType> mapping_distortion;
+    /// mu, the weight of E_m.
+    double mu = 1000.0;
+
+    Variant variant = Variant::kReduced;
+    /// How the initial A_i are made feasible (section 4.2); by default the closest similarity for
+    /// the conformal barrier and the closest rotation otherwise.
+    std::optional<Initialization> initialization;
+    std::uint64_t seed = 1;  ///< for random initial rotations
+
+    // The lambda schedule: lambda = min(lambda_min max((mu E_m + E_C) / E~, 1), lambda_max).
+    double lambda_min = 1e3;
+    double lambda_max = 1e16;
+
+    // Hessian modification.
+    /// Per-simplex block projection; the paper shifts by -kappa + 1e-8 (kShift), eigenvalue
+    /// clamping converges in fewer iterations on our cases (DESIGN.md) and is the default.
+    ProjectionMode projection = ProjectionMode::kClamp;
+    double projection_epsilon = 1e-8;
+    /// Hessian-only diagonal shift on the translations of r-SA, times lambda (step 2 of 4.4;
+    /// the paper uses 1e-6). Off by default: with many handles (a fixed boundary) Omega_s holds
+    /// many simplices, and at lambda = 1e16 a shift of 1e10 on their translations freezes them.
+    /// Measured on a 750-tet cube with its boundary as handles: with 1e-6 no convergence in 200
+    /// iterations (conformal max 1.24), with 0 converged in 24 (conformal max 1.0006, the
+    /// optimum being the identity). Redundant translations are still handled: the
+    /// regularization tau of step 3 reaches them when a factorization fails.
+    double translation_shift = 0.0;
+    LinearSolverType linear_solver = LinearSolverType::kCholmodSupernodal;
+
+    // Termination: E~_assembly below assembly_tolerance and the relative change of E within a
+    // step below energy_tolerance, or limits.
+    double assembly_tolerance = 1e-12;
+    double energy_tolerance = 1e-8;
+    int max_iterations = 200;
+    double max_time_seconds = kInfinity;
+
+    /// Verification: handles must end within this fraction of the bounding-box diagonal of the
+    /// initial map from their targets.
+    double handle_tolerance = 1e-6;
+
+    /// Worker threads; 0 = all cores. Results do not depend on it.
+    int num_threads = 0;
+
+    /// The initialization actually used: `initialization` or the default for `distortion`.
+    Initialization effective_initialization() const;
+    /// Throws InvalidArgumentError naming the first bad field and its value.
+    void validate() const;
+};
+
+}  // namespace sa
