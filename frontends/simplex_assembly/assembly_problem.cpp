@@ -82,7 +82,6 @@ AssemblyProblem<D>::AssemblyProblem(const AssemblyInput<D>& in,
     if (!translation_simplices_.empty()) {
         const BlockId b =
             problem_->add_variable_block("translations", a_offset(n), problem_->num_variables());
-        problem_->set_regularize_on_failure(b, false);  // tau goes to the A_i only (4.4, step 3)
         if (variant_ == Variant::kReduced) shifted_block_ = b;
     }
     for (Index s : in.anchored_simplices) {
