@@ -1,0 +1,65 @@
+#include "frontends/cli/cli_support.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <set>
+
+#include "geometry/io/mesh_file.h"
+#include "geometry/io/problem_io.h"
+#include "optim/errors.h"
+
+namespace sa::cli {
+
+Eigen::MatrixXd read_positions(const std::string& path, Index expected_rows, int dimension) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    static const std::set<std::string> mesh_extensions = {".obj", ".off",  ".ply",  ".stl", ".vtk",
+                                                          ".vtu", ".mesh", ".node", ".ele"};
+    Eigen::MatrixXd positions;
+    if (mesh_extensions.count(ext)) {
+        positions = read_mesh_file(path).mesh.vertices;
+    } else {
+        std::ifstream in(path);
+        if (!in) throw InputError(path + ": cannot open");
+        const std::string text((std::istreambuf_iterator<char>(in)),
+                               std::istreambuf_iterator<char>());
+        if (text.find("resV") != std::string::npos) {
+            positions = read_result_positions(path);
+        } else {
+            const MeshFile problem = read_problem(path);
+            positions = *problem.initial;
+        }
+    }
+    if (positions.rows() != expected_rows) {
+        throw InputError(path + ": " + std::to_string(positions.rows()) +
+                         " positions, the mesh has " + std::to_string(expected_rows) + " vertices");
+    }
+    if (positions.cols() < dimension) {
+        throw InputError(path + ": positions have " + std::to_string(positions.cols()) +
+                         " coordinates, the map needs " + std::to_string(dimension));
+    }
+    if (positions.cols() > dimension &&
+        positions.rightCols(positions.cols() - dimension).cwiseAbs().maxCoeff() > 0.0) {
+        throw InputError(path + ": positions have " + std::to_string(positions.cols()) +
+                         " non-zero coordinates; a map of triangles is planar (" +
+                         std::to_string(dimension) + " coordinates)");
+    }
+    return positions.leftCols(dimension);
+}
+
+void check_writable(const std::string& path, bool overwrite) {
+    if (!overwrite && std::filesystem::exists(path)) {
+        throw InputError(path + " exists; pass --force to overwrite it");
+    }
+}
+
+Logger stderr_logger(bool quiet) {
+    if (quiet) return {};
+    return [](const std::string& line) { std::cerr << line << '\n' << std::flush; };
+}
+
+}  // namespace sa::cli

@@ -1,0 +1,25 @@
+#pragma once
+// Helpers shared by the `sa` subcommands: reading positions from any supported file, refusing to
+// overwrite outputs unless asked, and the progress logger.
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "optim/logger.h"
+#include "optim/types.h"
+
+namespace sa::cli {
+
+/// Positions from `path`: the vertices of a mesh file (by extension), the `resV` record of a
+/// result file, or the initial block of a plain-text problem. Checks #V rows and keeps the first
+/// `dimension` columns (dropped columns must be zero: a planar map saved with z = 0).
+Eigen::MatrixXd read_positions(const std::string& path, Index expected_rows, int dimension);
+
+/// Throws InputError when `path` exists and `overwrite` is false.
+void check_writable(const std::string& path, bool overwrite);
+
+/// A logger that writes each line to stderr (nothing when `quiet`).
+Logger stderr_logger(bool quiet);
+
+}  // namespace sa::cli

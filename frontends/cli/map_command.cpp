@@ -1,0 +1,182 @@
+#include "frontends/cli/map_command.h"
+
+#include <cstdio>
+#include <iostream>
+
+#include "frontends/cli/cli_support.h"
+#include "frontends/output/iteration_recorder.h"
+#include "frontends/output/map_output.h"
+#include "frontends/output/map_report.h"
+#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "geometry/io/index_list_io.h"
+#include "geometry/io/mesh_file.h"
+#include "optim/errors.h"
+
+namespace sa::cli {
+
+double parse_bound(const std::string& text) {
+    if (text == "inf" || text == "infinity" || text == "none") return kInfinity;
+    try {
+        std::size_t used = 0;
+        const double k = std::stod(text, &used);
+        if (used == text.size() && k > 1.0) return k;
+    } catch (const std::exception&) {
+    }
+    throw InvalidArgumentError("--bound " + text + ": expected a number > 1 or 'inf'");
+}
+
+CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
+    CLI::App* map = app.add_subcommand(
+        "map", "Inversion-free map of a 2D/3D mesh with handles (Simplex Assembly)");
+    map->add_option(
+           "--rest", a.rest,
+           "rest mesh (.obj .off .ply .stl .vtk .vtu .mesh .node/.ele) or a plain-text problem "
+           "file carrying its initial map and handles")
+        ->required();
+    map->add_option(
+        "--init", a.init,
+        "initial map: a mesh file with the same vertices, result records (resV) or a problem file");
+    map->add_option("--handles", a.handles,
+                    "handle vertices, 0-based indices (default: those of the problem file)");
+    map->add_option(
+        "--targets", a.targets,
+        "positions whose rows at the handles are their targets (default: the initial map); "
+        "without --init the initial map is the rest shape with the handles moved there");
+    map->add_option("--distortion", a.distortion,
+                    "distortion in the barrier: conformal, volumetric or isometric")
+        ->capture_default_str();
+    map->add_option("--bound", a.bound, "bound K on that distortion, a number > 1 or inf")
+        ->capture_default_str();
+    map->add_option(
+           "--energy", a.energy,
+           "mapping energy E_m: none or a distortion (difference = |A - A0|^2 to the initial map)")
+        ->capture_default_str();
+    map->add_option("--mu", a.mu, "weight of E_m")->capture_default_str();
+    map->add_option("--s", a.s, "s in the barrier's exp(s d)")->capture_default_str();
+    map->add_option("--variant", a.variant,
+                    "r (reduced, default), f (full) or v (vertex variables)")
+        ->capture_default_str();
+    map->add_option(
+        "--initialization", a.initialization,
+        "initial linear parts: similarity, rotation, identity or random (default: similarity "
+        "for conformal, rotation otherwise)");
+    map->add_option("--seed", a.seed, "seed of --initialization random")->capture_default_str();
+    map->add_option("--max-iterations", a.max_iterations, "Newton iterations at most")
+        ->capture_default_str();
+    map->add_option("--threads", a.threads, "worker threads, 0 = all cores")->capture_default_str();
+    map->add_option(
+           "--out", a.out,
+           "output map: .vtu .vtk .obj .off .mesh .node; other names get result records (resV)")
+        ->required();
+    map->add_option("--report", a.report, "JSON report: options, iterations, times, verification");
+    map->add_option("--record", a.record,
+                    "folder for a ParaView time series of the assembly (assembly.pvd)");
+    map->add_flag("--force", a.force, "overwrite existing output files");
+    map->add_flag("--quiet", a.quiet, "no progress rows on stderr");
+    return map;
+}
+
+namespace {
+
+std::string format_quality(const MapQuality& q) {
+    char line[256];
+    std::snprintf(
+        line, sizeof line,
+        "%ld inverted, %ld degenerate; conformal max %.4g avg %.4g; isometric max %.4g avg %.4g",
+        long(q.inverted), long(q.degenerate), q.conformal.max, q.conformal.mean, q.isometric.max,
+        q.isometric.mean);
+    return line;
+}
+
+}  // namespace
+
+int run_map_command(const MapArguments& a) {
+    // Options first: a typo should not cost a solve.
+    SimplexAssemblyOptions options;
+    options.distortion = parse_distortion(a.distortion);
+    options.bound = parse_bound(a.bound);
+    if (a.energy != "none") options.mapping_distortion = parse_distortion(a.energy);
+    options.mu = a.mu;
+    options.s = a.s;
+    options.variant = parse_variant(a.variant);
+    if (!a.initialization.empty()) options.initialization = parse_initialization(a.initialization);
+    options.seed = a.seed;
+    options.max_iterations = a.max_iterations;
+    options.num_threads = a.threads;
+    options.validate();
+    check_writable(a.out, a.force);
+    if (!a.report.empty()) check_writable(a.report, a.force);
+
+    MeshFile rest = read_mesh_file(a.rest);
+    for (const std::string& warning : rest.warnings)
+        std::cerr << "sa: warning: " << warning << '\n';
+    MappingProblem problem;
+    problem.source = a.rest;
+    problem.mesh = std::move(rest.mesh);
+    const int d = problem.mesh.simplex_dimension();
+    const Index nv = problem.mesh.num_vertices();
+    problem.handles = a.handles.empty() ? rest.handles : read_index_list(a.handles);
+    for (Index h : problem.handles) {
+        if (h < 0 || h >= nv) {
+            throw InputError((a.handles.empty() ? a.rest : a.handles) + ": handle vertex " +
+                             std::to_string(h) + " outside [0, " + std::to_string(nv) + ")");
+        }
+    }
+    Eigen::MatrixXd targets;
+    if (!a.targets.empty()) {
+        const Eigen::MatrixXd positions = read_positions(a.targets, nv, d);
+        targets.resize(problem.handles.size(), d);
+        for (std::size_t k = 0; k < problem.handles.size(); ++k)
+            targets.row(k) = positions.row(problem.handles[k]);
+        problem.targets = targets;
+    }
+    if (!a.init.empty()) {
+        problem.initial = read_positions(a.init, nv, d);
+    } else if (rest.initial) {
+        problem.initial = *rest.initial;
+    } else if (!a.targets.empty() && problem.mesh.ambient_dimension() == d) {
+        problem.initial = problem.mesh.vertices;
+        for (std::size_t k = 0; k < problem.handles.size(); ++k)
+            problem.initial.row(problem.handles[k]) = targets.row(k);
+    } else {
+        throw InputError(
+            a.rest +
+            ": no initial map: give --init, or --targets to move the handles of the rest shape, "
+            "or a --rest file that carries one (a problem file, an OBJ with vt)");
+    }
+
+    std::unique_ptr<IterationRecorder> recorder;
+    SimplexAssemblyObserver observer;
+    observer.logger = stderr_logger(a.quiet);
+    if (!a.record.empty()) {
+        recorder = std::make_unique<IterationRecorder>(a.record, problem.mesh, a.force);
+        observer.snapshot = recorder->callback();
+    }
+    std::cout << "sa map: " << problem.mesh.num_simplices()
+              << (d == 2 ? " triangles" : " tetrahedra") << ", " << nv << " vertices, "
+              << problem.handles.size() << " handles (" << a.rest << ")\n";
+    const SimplexAssemblyResult result = run_simplex_assembly(problem, options, observer);
+
+    write_map_result(a.out, problem, result);
+    if (!a.report.empty()) write_json(a.report, map_report(problem, options, result));
+    std::string series;
+    if (recorder) series = recorder->finish();
+
+    char times[200];
+    std::snprintf(times, sizeof times,
+                  "%.3f s (setup %.3f, disassembly %.3f, optimization %.3f, recovery %.3f, "
+                  "verification %.3f)",
+                  result.times.total, result.times.setup, result.times.disassembly,
+                  result.times.optimization, result.times.recovery, result.times.verification);
+    std::cout << "  initial map: " << format_quality(result.initial_quality) << "\n"
+              << "  result:      " << format_quality(result.final_quality) << "\n"
+              << "  " << to_string(options.variant) << ", " << result.num_variables
+              << " variables, " << result.newton.num_steps() << " iterations, time " << times
+              << "\n"
+              << "  " << result.message << "\n"
+              << "  wrote " << a.out << (a.report.empty() ? "" : ", " + a.report)
+              << (series.empty() ? "" : ", " + series) << "\n";
+    return result.success ? 0 : 1;
+}
+
+}  // namespace sa::cli

@@ -1,0 +1,33 @@
+#pragma once
+// `sa map`: an inversion-free map by Simplex Assembly from a rest mesh, an initial map and
+// handles; writes the result, a JSON report and, optionally, the iterations for ParaView.
+
+#include <CLI/CLI.hpp>
+#include <memory>
+#include <string>
+
+#include "frontends/simplex_assembly/simplex_assembly_options.h"
+
+namespace sa::cli {
+
+struct MapArguments {
+    std::string rest, init, handles, targets, out, report, record;
+    std::string distortion = "conformal", energy = "none", variant = "r", initialization;
+    std::string bound = "inf";
+    double mu = 1000.0, s = 1.0;
+    int max_iterations = 200, threads = 0;
+    std::uint64_t seed = 1;
+    bool force = false, quiet = false;
+};
+
+/// Adds the subcommand to `app`; `arguments` is filled when it is parsed.
+CLI::App* add_map_command(CLI::App& app, MapArguments& arguments);
+
+/// Runs it: 0 for a verified success, 1 when the result did not pass verification. Bad input
+/// throws (InputError, InvalidArgumentError) before any output is written.
+int run_map_command(const MapArguments& arguments);
+
+/// Parses "inf" or a number > 1.
+double parse_bound(const std::string& text);
+
+}  // namespace sa::cli

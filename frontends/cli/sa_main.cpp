@@ -1,0 +1,37 @@
+// The `sa` command: inversion-free mappings by Simplex Assembly.
+//   sa map  ...   a mesh, an initial map and handles -> a verified inversion-free map
+//   sa demo ...   the paper's Figure 1 in miniature
+// Exit status: 0 verified success, 1 a result that did not pass verification, 2 bad input.
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "frontends/cli/demo_command.h"
+#include "frontends/cli/map_command.h"
+#include "optim/errors.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"sa: inversion-free mappings by Simplex Assembly (Fu and Liu 2016)"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "sa 0.1.0");
+    sa::cli::MapArguments map_arguments;
+    sa::cli::DemoArguments demo_arguments;
+    CLI::App* map = sa::cli::add_map_command(app, map_arguments);
+    CLI::App* demo = sa::cli::add_demo_command(app, demo_arguments);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? 0 : 2;
+    }
+    try {
+        if (map->parsed()) return sa::cli::run_map_command(map_arguments);
+        if (demo->parsed()) return sa::cli::run_demo_command(demo_arguments);
+    } catch (const sa::Error& e) {
+        std::cerr << "sa: error: " << e.what() << '\n';
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "sa: internal error: " << e.what() << '\n';
+        return 3;
+    }
+    return 2;
+}

@@ -1,0 +1,117 @@
+#include "frontends/output/map_report.h"
+
+#include "geometry/io/atomic_file.h"
+
+namespace sa {
+
+namespace {
+/// JSON has no infinity: write it as null.
+nlohmann::json number(double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+}  // namespace
+
+nlohmann::json quality_json(const MapQuality& q) {
+    auto stat = [](const QualityStat& s) {
+        return nlohmann::json{{"max", number(s.max)}, {"mean", number(s.mean)}};
+    };
+    return {{"simplices", q.simplices},       {"inverted", q.inverted},
+            {"degenerate", q.degenerate},     {"conformal", stat(q.conformal)},
+            {"isometric", stat(q.isometric)}, {"volumetric", stat(q.volumetric)}};
+}
+
+nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOptions& o,
+                          const SimplexAssemblyResult& r) {
+    nlohmann::json report;
+    report["input"] = {{"source", problem.source},
+                       {"vertices", problem.mesh.num_vertices()},
+                       {"simplices", problem.mesh.num_simplices()},
+                       {"simplex_dimension", problem.mesh.simplex_dimension()},
+                       {"rest_dimension", problem.mesh.ambient_dimension()},
+                       {"handles", problem.handles.size()}};
+    report["options"] = {
+        {"distortion", to_string(o.distortion)},
+        {"bound", number(o.bound)},
+        {"s", o.s},
+        {"gamma", o.gamma},
+        {"mapping_distortion", o.mapping_distortion ? to_string(*o.mapping_distortion) : "none"},
+        {"mu", o.mu},
+        {"variant", to_string(o.variant)},
+        {"initialization", to_string(o.effective_initialization())},
+        {"lambda_min", o.lambda_min},
+        {"lambda_max", o.lambda_max},
+        {"projection", to_string(o.projection)},
+        {"translation_shift", o.translation_shift},
+        {"assembly_tolerance", o.assembly_tolerance},
+        {"energy_tolerance", o.energy_tolerance},
+        {"max_iterations", o.max_iterations},
+        {"handle_tolerance", o.handle_tolerance},
+        {"threads", r.newton.num_threads}};
+    const Verification& v = r.verification;
+    report["verification"] = {{"success", r.success},
+                              {"description", v.describe()},
+                              {"simplices", v.simplices},
+                              {"inverted", v.inverted},
+                              {"degenerate", v.degenerate},
+                              {"handles", v.handles},
+                              {"handle_error", v.handle_error},
+                              {"handle_tolerance", v.handle_tolerance},
+                              {"bound", number(v.bound)},
+                              {"max_distortion", number(v.max_distortion)},
+                              {"within_bound", v.within_bound()}};
+    report["message"] = r.message;
+    report["initial_quality"] = quality_json(r.initial_quality);
+    report["final_quality"] = quality_json(r.final_quality);
+    report["assembly"] = {{"assembled", r.assembled},
+                          {"final_assembly_energy", r.final_assembly},
+                          {"final_lambda", r.final_lambda},
+                          {"variables", r.num_variables},
+                          {"translation_simplices", r.num_translation_simplices},
+                          {"steiner_tree_edges", r.num_tree_edges},
+                          {"anchored_simplices", r.num_anchored_simplices},
+                          {"newton_termination", to_string(r.newton.termination)},
+                          {"newton_message", r.newton.message}};
+    nlohmann::json iterations = nlohmann::json::array();
+    for (std::size_t k = 0; k < r.iterations.size(); ++k) {
+        const AssemblyRecord& a = r.iterations[k];
+        nlohmann::json row = {{"iteration", a.iteration}, {"energy", a.energy},
+                              {"assembly", a.assembly},   {"barrier", a.barrier},
+                              {"lambda", a.lambda},       {"time", a.time}};
+        if (k < r.newton.iterations.size() && a.iteration > 0) {
+            const IterationRecord& n = r.newton.iterations[k];
+            row["step"] = n.step_length;
+            row["line_search_trials"] = n.line_search_trials;
+            row["gradient_norm"] = n.gradient_norm;
+            row["decrement"] = n.decrement;
+            row["regularization"] = n.regularization;
+        }
+        iterations.push_back(row);
+    }
+    report["iterations"] = iterations;
+    const PhaseTimes& p = r.newton.times;
+    report["times"] = {{"setup", r.times.setup},
+                       {"disassembly", r.times.disassembly},
+                       {"optimization", r.times.optimization},
+                       {"recovery", r.times.recovery},
+                       {"verification", r.times.verification},
+                       {"total", r.times.total},
+                       {"newton_phases",
+                        {{"setup", p.setup},
+                         {"evaluate", p.evaluate},
+                         {"project", p.project},
+                         {"assemble", p.assemble},
+                         {"analyze", p.analyze},
+                         {"factorize", p.factorize},
+                         {"solve", p.solve},
+                         {"line_search", p.line_search},
+                         {"callbacks", p.callbacks}}}};
+    return report;
+}
+
+void write_json(const std::string& path, const nlohmann::json& report) {
+    AtomicFile file(path);
+    file.stream() << report.dump(2) << "\n";
+    file.commit();
+}
+
+}  // namespace sa
