@@ -51,6 +51,26 @@ Eigen::MatrixXd read_positions(const std::string& path, Index expected_rows, int
     return positions.leftCols(dimension);
 }
 
+void check_output_format(const std::string& path, int dimension) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    if ((ext == ".obj" || ext == ".off") && dimension != 2) {
+        throw InvalidArgumentError(
+            path + ": " + ext + " holds triangles; write tetrahedra as .vtu, .vtk, .mesh or .node");
+    }
+    if ((ext == ".node" || ext == ".ele") && dimension != 3) {
+        throw InvalidArgumentError(
+            path + ": " + ext +
+            " holds tetrahedra; write triangles as .vtu, .vtk, .obj, .off or .mesh");
+    }
+    if (ext == ".ply" || ext == ".stl") {
+        throw InvalidArgumentError(
+            path + ": " + ext +
+            " is read, not written; use .vtu, .vtk, .obj, .off, .mesh or .node");
+    }
+}
+
 void check_writable(const std::string& path, bool overwrite) {
     if (!overwrite && std::filesystem::exists(path)) {
         throw InputError(path + " exists; pass --force to overwrite it");

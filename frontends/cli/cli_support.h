@@ -16,6 +16,11 @@ namespace sa::cli {
 /// `dimension` columns (dropped columns must be zero: a planar map saved with z = 0).
 Eigen::MatrixXd read_positions(const std::string& path, Index expected_rows, int dimension);
 
+/// Throws InvalidArgumentError when `path`'s format cannot hold simplices of `dimension` (.obj and
+/// .off hold triangles, .node/.ele tetrahedra; .ply and .stl are not written), so that a run never
+/// ends in a write that was bound to fail.
+void check_output_format(const std::string& path, int dimension);
+
 /// Throws InputError when `path` exists and `overwrite` is false.
 void check_writable(const std::string& path, bool overwrite);
 

@@ -53,6 +53,9 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
         ->capture_default_str();
     map->add_option("--mu", a.mu, "weight of E_m")->capture_default_str();
     map->add_option("--s", a.s, "s in the barrier's exp(s d)")->capture_default_str();
+    map->add_option("--lambda-max", a.lambda_max,
+                    "largest weight of the assembly terms (section 4.4)")
+        ->capture_default_str();
     map->add_option("--variant", a.variant,
                     "r (reduced, default), f (full) or v (vertex variables)")
         ->capture_default_str();
@@ -98,6 +101,7 @@ int run_map_command(const MapArguments& a) {
     if (a.energy != "none") options.mapping_distortion = parse_distortion(a.energy);
     options.mu = a.mu;
     options.s = a.s;
+    options.lambda_max = a.lambda_max;
     options.variant = parse_variant(a.variant);
     if (!a.initialization.empty()) options.initialization = parse_initialization(a.initialization);
     options.seed = a.seed;
@@ -115,6 +119,7 @@ int run_map_command(const MapArguments& a) {
     problem.mesh = std::move(rest.mesh);
     const int d = problem.mesh.simplex_dimension();
     const Index nv = problem.mesh.num_vertices();
+    check_output_format(a.out, d);
     problem.handles = a.handles.empty() ? rest.handles : read_index_list(a.handles);
     for (Index h : problem.handles) {
         if (h < 0 || h >= nv) {

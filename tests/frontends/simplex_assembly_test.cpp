@@ -38,8 +38,12 @@ void expect_verified(const SimplexAssemblyResult& r, const MappingProblem& p) {
     for (Index s = 0; s < p.mesh.num_simplices(); ++s) {
         Eigen::MatrixXd rest(d, d), out(d, d);
         for (int k = 0; k < d; ++k) {
-            rest.col(k) = (p.mesh.vertices.row(p.mesh.simplices(s, k + 1)) - p.mesh.vertices.row(p.mesh.simplices(s, 0))).transpose();
-            out.col(k) = (r.positions.row(p.mesh.simplices(s, k + 1)) - r.positions.row(p.mesh.simplices(s, 0))).transpose();
+            rest.col(k) = (p.mesh.vertices.row(p.mesh.simplices(s, k + 1)) -
+                           p.mesh.vertices.row(p.mesh.simplices(s, 0)))
+                              .transpose();
+            out.col(k) = (r.positions.row(p.mesh.simplices(s, k + 1)) -
+                          r.positions.row(p.mesh.simplices(s, 0)))
+                             .transpose();
         }
         EXPECT_GT(rest.determinant() * out.determinant(), 0.0) << "simplex " << s;
     }

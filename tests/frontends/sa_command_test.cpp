@@ -1,0 +1,150 @@
+// Runs the `sa` executable as a user would: exit codes, messages, outputs.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+
+#include "geometry/io/mesh_file.h"
+#include "geometry/map_quality.h"
+#include "geometry/mesh_generators.h"
+#include "geometry/mesh_topology.h"
+
+namespace sa {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+    int status;
+    std::string out, err;
+};
+
+class SaCommand : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("sa_command_test_" + std::to_string(::getpid()) + "_" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    Outcome sa(const std::string& arguments) {
+        const std::string out = (dir_ / "stdout.txt").string(),
+                          err = (dir_ / "stderr.txt").string();
+        const int code = std::system(
+            (std::string(SA_EXECUTABLE) + " " + arguments + " > " + out + " 2> " + err).c_str());
+        return {WEXITSTATUS(code), read(out), read(err)};
+    }
+    static std::string read(const std::string& path) {
+        std::ifstream in(path);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+    // A plain-text problem: a grid with its boundary fixed and the interior scrambled.
+    std::string folded_problem(const std::string& name) {
+        const SimplicialMesh mesh = grid_triangles(8, 8);
+        const MeshTopology t = mesh_topology(mesh, "grid");
+        std::mt19937 rng(3);
+        std::uniform_real_distribution<double> u(-0.15, 0.15);
+        std::ofstream f(path(name));
+        f.precision(17);
+        f << mesh.num_vertices() << " 2\n"
+          << mesh.vertices << "\n"
+          << mesh.num_vertices() << " 2\n";
+        std::vector<int> handles;
+        for (Index v = 0; v < mesh.num_vertices(); ++v) {
+            Eigen::RowVector2d p = mesh.vertices.row(v);
+            if (t.boundary_vertex[v]) {
+                handles.push_back(v);
+            } else {
+                p += Eigen::RowVector2d(u(rng), u(rng));
+            }
+            f << p << "\n";
+        }
+        f << mesh.num_simplices() << " 3\n" << mesh.simplices << "\n" << handles.size() << "\n";
+        for (int h : handles) f << h << "\n";
+        return path(name);
+    }
+
+    fs::path dir_;
+};
+
+TEST_F(SaCommand, MapWritesAVerifiedResultAndAReport) {
+    const std::string problem = folded_problem("grid.txt");
+    const Outcome r = sa("map --rest " + problem + " --out " + path("out.obj") + " --report " +
+                     path("r.json") + " --record " + path("frames"));
+    ASSERT_EQ(r.status, 0) << r.out << r.err;
+    EXPECT_NE(
+        r.out.find("success: verified from the output positions: 0 of 128 simplices inverted"),
+        std::string::npos)
+        << r.out;
+    EXPECT_NE(r.err.find("iter"), std::string::npos);  // progress rows go to stderr
+
+    // The output, read back and checked here: no inverted triangle, handles in place.
+    const MeshFile out = read_mesh_file(path("out.obj"));
+    const MeshFile in = read_mesh_file(problem);
+    const Eigen::MatrixXd map = out.mesh.vertices.leftCols(2);
+    const RestFrames<2> frames = rest_frames<2>(in.mesh);
+    EXPECT_EQ(map_quality<2>(linear_parts<2>(in.mesh, frames, map), frames.volume).inverted, 0);
+    for (Index h : in.handles) EXPECT_LT((map.row(h) - in.initial->row(h)).norm(), 1e-9);
+
+    const nlohmann::json report = nlohmann::json::parse(read(path("r.json")));
+    EXPECT_TRUE(report["verification"]["success"].get<bool>());
+    EXPECT_EQ(report["verification"]["inverted"].get<int>(), 0);
+    EXPECT_GT(report["initial_quality"]["inverted"].get<int>(), 0);
+    EXPECT_GE(report["iterations"].size(), 2u);
+    EXPECT_TRUE(report["times"].contains("optimization"));
+
+    EXPECT_TRUE(fs::exists(path("frames/assembly.pvd")));
+    EXPECT_TRUE(fs::exists(path("frames/iteration_0000.vtu")));
+}
+
+TEST_F(SaCommand, BadInputGetsOneLineExitTwoAndNoOutput) {
+    std::ofstream(path("broken.txt")) << "4 2\n0 0\n1 0\n1 1\nnot-a-number 1\n";
+    const Outcome r = sa("map --rest " + path("broken.txt") + " --out " + path("out.vtu"));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("broken.txt:5:"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(path("out.vtu")));
+
+    const std::string problem = folded_problem("grid.txt");
+    const Outcome handles = sa("map --rest " + problem + " --handles " + path("missing.txt") +
+                           " --out " + path("out.vtu"));
+    EXPECT_EQ(handles.status, 2);
+    EXPECT_NE(handles.err.find("missing.txt"), std::string::npos) << handles.err;
+    EXPECT_EQ(sa("map --rest " + problem + " --out " + path("out.vtu") + " --bound 0.9").status, 2);
+    EXPECT_EQ(sa("map --rest " + problem + " --out " + path("out.node")).status, 2);  // tets only
+    EXPECT_EQ(sa("map --rest " + problem).status, 2);                                 // no --out
+    EXPECT_FALSE(fs::exists(path("out.vtu")));
+    EXPECT_FALSE(fs::exists(path("out.node")));
+}
+
+TEST_F(SaCommand, ExistingOutputsAreKeptWithoutForce) {
+    const std::string problem = folded_problem("grid.txt");
+    std::ofstream(path("mine.vtu")) << "precious";
+    const Outcome r = sa("map --rest " + problem + " --out " + path("mine.vtu"));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--force"), std::string::npos);
+    EXPECT_EQ(read(path("mine.vtu")), "precious");
+    EXPECT_EQ(
+        sa("map --rest " + problem + " --out " + path("mine.vtu") + " --force --quiet").status, 0);
+    EXPECT_NE(read(path("mine.vtu")), "precious");
+}
+
+TEST_F(SaCommand, DemoRepairsTheFoldedHarmonicMap) {
+    const Outcome r = sa("demo --size 10 --quiet --out-dir " + path("demo"));
+    ASSERT_EQ(r.status, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("| inf |"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("| 4 |"), std::string::npos) << r.out;
+    for (const char* f : {"initial.vtu", "conformal_unbounded.vtu", "conformal_bound4.vtu"}) {
+        EXPECT_TRUE(fs::exists(path(std::string("demo/") + f))) << f;
+    }
+}
+
+}  // namespace
+}  // namespace sa

@@ -1,0 +1,39 @@
+// The published untangling problems of ../shared/data/tlc, solved and verified. Skips when the
+// data folder is absent.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "geometry/io/problem_io.h"
+
+namespace sa {
+namespace {
+
+class TlcProblem : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(TlcProblem, UntanglesAndVerifies) {
+    const std::string path = std::string(SA_DATA_DIR) + "/tlc/" + GetParam() + "/input";
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is absent";
+    const MeshFile file = read_problem(path);
+    MappingProblem p;
+    p.mesh = file.mesh;
+    p.initial = *file.initial;
+    p.handles = file.handles;
+    p.source = path;
+    const SimplexAssemblyResult r = run_simplex_assembly(p, SimplexAssemblyOptions{});
+    EXPECT_TRUE(r.success) << r.message;
+    EXPECT_EQ(r.verification.inverted, 0);
+    EXPECT_LE(r.verification.handle_error, r.verification.handle_tolerance);
+}
+
+INSTANTIATE_TEST_SUITE_P(Tlc, TlcProblem,
+                         ::testing::Values("stgc-2d", "sea-2d", "param2d", "cube", "stgc-3d"),
+                         [](const auto& info) {
+                             std::string name = info.param;
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });
+
+}  // namespace
+}  // namespace sa
