@@ -1,0 +1,196 @@
+#!/usr/bin/env python3
+"""Runs `sa map` on the published untangling problems and 3D deformation problems of
+../shared/data, checks every result with the independent checker ../shared/tools/check_map.py,
+and prints a markdown table: elements, inverted before and after, handle error, delta_con and
+delta_iso (max / area-weighted mean), iterations, wall time and peak memory of each run.
+
+Cases:
+  tlc/<name>        the plain-text problem (rest, initial map, handles) as published
+  deform/<name>     the rest shape with only the handle vertices moved to their positions in
+                    <name>_init.node (the handles stay at those targets)
+  untwist-twisted   deform/untwist with its whole _init.node as the initial map (the handles of
+                    untwist do not move, so deform/untwist alone is the rest shape itself)
+
+  python3 bench/map_benchmarks.py [--cases tlc,deform] [--timeout 600] [--write BENCHMARKS.md]
+
+With --write, the table replaces the section between the markers
+<!-- map-benchmarks:begin --> and <!-- map-benchmarks:end --> of that file, with the command
+and the date. Extra arguments after -- go to every `sa map` run.
+"""
+import argparse
+import datetime
+import json
+import os
+import platform
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+
+
+def cases(data, which):
+    out = []
+    if 'tlc' in which:
+        for name in ['stgc-2d', 'sea-2d', 'param2d', 'cube', 'stgc-3d']:
+            d = os.path.join(data, 'tlc', name)
+            out.append(dict(name='tlc/' + name, dim=3 if name in ('cube', 'stgc-3d') else 2,
+                            args=['--rest', os.path.join(d, 'input')],
+                            check=['--rest', os.path.join(d, 'input')]))
+    if 'deform' in which:
+        for name in ['untwist', 'stretch', 'botijo', 'rabbit']:
+            d = os.path.join(data, 'deform', name)
+            rest, init = os.path.join(d, name + '_rest.node'), os.path.join(d, name + '_init.node')
+            handles = os.path.join(d, name + '_handles.txt')
+            common = ['--handles', handles]
+            out.append(dict(name='deform/' + name, dim=3,
+                            args=['--rest', rest, '--targets', init] + common,
+                            check=['--rest', rest, '--targets', init] + common))
+            if name == 'untwist':
+                out.append(dict(name='untwist-twisted', dim=3,
+                                args=['--rest', rest, '--init', init] + common,
+                                check=['--rest', rest, '--targets', init] + common))
+    return out
+
+
+def run_measured(command, timeout):
+    """Runs `command` in a child Python that reports the child's wall time and peak RSS."""
+    wrapper = ('import json,resource,subprocess,sys,time\n'
+               't=time.time()\n'
+               'p=subprocess.run(sys.argv[1:],stdout=subprocess.PIPE,stderr=subprocess.PIPE,text=True)\n'
+               'w=time.time()-t\n'
+               'm=resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss\n'
+               'print(json.dumps(dict(code=p.returncode,wall=w,peak_kb=m,out=p.stdout,err=p.stderr[-4000:])))\n')
+    try:
+        p = subprocess.run([sys.executable, '-c', wrapper] + command, capture_output=True, text=True,
+                           timeout=timeout)
+        return json.loads(p.stdout)
+    except subprocess.TimeoutExpired:
+        return None
+
+
+def diagonal_of_targets(check_args):
+    """Bounding-box diagonal of the handle targets' file, for the checker's absolute tolerance."""
+    path = None
+    for flag in ('--targets', '--rest'):
+        if flag in check_args:
+            path = check_args[check_args.index(flag) + 1]
+            break
+    rows = []
+    with open(path) as f:
+        tokens = [line.split('#')[0].split() for line in f]
+    tokens = [t for t in tokens if t]
+    if path.endswith('.node'):
+        n = int(tokens[0][0])
+        rows = [[float(x) for x in t[1:4]] for t in tokens[1:1 + n]]
+    else:  # plain-text problem: its initial block
+        n = int(tokens[0][0])
+        init = tokens[1 + n + 1:1 + n + 1 + n]
+        rows = [[float(x) for x in t] for t in init]
+    lo = [min(r[i] for r in rows) for i in range(len(rows[0]))]
+    hi = [max(r[i] for r in rows) for i in range(len(rows[0]))]
+    return sum((b - a) ** 2 for a, b in zip(lo, hi)) ** 0.5
+
+
+def fmt(x, digits=3):
+    if x is None:
+        return '-'
+    if isinstance(x, float):
+        if x != x or x in (float('inf'), float('-inf')):
+            return 'inf'
+        return ('%.' + str(digits) + 'g') % x
+    return str(x)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    ap.add_argument('--sa', default=os.path.join(ROOT, 'build', 'bin', 'sa'))
+    ap.add_argument('--data', default=os.path.join(ROOT, '..', 'shared', 'data'))
+    ap.add_argument('--checker', default=os.path.join(ROOT, '..', 'shared', 'tools', 'check_map.py'))
+    ap.add_argument('--cases', default='tlc,deform', help='comma-separated: tlc, deform')
+    ap.add_argument('--only', help='run only the cases whose name contains this text')
+    ap.add_argument('--timeout', type=float, default=600.0, help='seconds per case')
+    ap.add_argument('--write', help='markdown file whose map-benchmarks section gets the table')
+    ap.add_argument('extra', nargs='*', help='arguments for every sa map run (after --)')
+    a = ap.parse_args()
+
+    rows = []
+    work = tempfile.mkdtemp(prefix='sa-map-bench-')
+    for case in cases(a.data, a.cases.split(',')):
+        if a.only and a.only not in case['name']:
+            continue
+        out = os.path.join(work, case['name'].replace('/', '_') + ('.node' if case['dim'] == 3 else '.obj'))
+        report = out + '.json'
+        command = [a.sa, 'map'] + case['args'] + ['--out', out, '--report', report, '--force', '--quiet'] + a.extra
+        print('running', case['name'], '...', file=sys.stderr, flush=True)
+        r = run_measured(command, a.timeout)
+        row = dict(case=case['name'])
+        if r is None:
+            row['status'] = 'killed after %g s' % a.timeout
+            rows.append(row)
+            continue
+        row['wall'], row['peak'] = r['wall'], r['peak_kb'] / 1024.0 / 1024.0
+        if not os.path.exists(report):
+            row['status'] = 'sa exit %d: %s' % (r['code'], (r['err'].strip().splitlines() or [''])[-1])
+            rows.append(row)
+            continue
+        rep = json.load(open(report))
+        row['elements'] = rep['input']['simplices']
+        row['before'] = rep['initial_quality']['inverted']
+        row['iterations'] = len(rep['iterations']) - 1
+        row['assembled'] = rep['assembly']['assembled']
+        row['sa_success'] = rep['verification']['success']
+        tol = 1e-6 * diagonal_of_targets(case['check'])
+        c = subprocess.run([sys.executable, a.checker] + case['check'] + ['--result', out, '--tol', repr(tol)],
+                           capture_output=True, text=True)
+        try:
+            chk = json.loads(c.stdout)
+        except json.JSONDecodeError:
+            chk = dict(ok=False, error=c.stdout + c.stderr)
+        row['check'] = chk
+        row['status'] = 'verified' if chk.get('ok') else 'NOT verified'
+        if chk.get('ok') != rep['verification']['success']:
+            row['status'] += ' (sa and the checker disagree!)'
+        rows.append(row)
+        print('  ', row['status'], fmt(row['wall']), 's', file=sys.stderr, flush=True)
+
+    header = ('| case | elements | inverted before | inverted after | handle error | '
+              'δ_con max / avg | δ_iso max / avg | iterations | assembled | wall time (s) | '
+              'peak memory (GB) | check_map.py |\n'
+              '|---|---:|---:|---:|---:|---:|---:|---:|:---:|---:|---:|:---|\n')
+    lines = []
+    for r in rows:
+        chk = r.get('check', {})
+        con, iso = chk.get('conformal', [None, None]), chk.get('isometric', [None, None])
+        lines.append('| %s | %s | %s | %s | %s | %s / %s | %s / %s | %s | %s | %s | %s | %s |' % (
+            r['case'], fmt(r.get('elements')), fmt(r.get('before')), fmt(chk.get('inverted')),
+            fmt(chk.get('handle_max_err')), fmt(con[0], 4), fmt(con[1], 4), fmt(iso[0], 4), fmt(iso[1], 4),
+            fmt(r.get('iterations')), {True: 'yes', False: 'no'}.get(r.get('assembled'), '-'),
+            fmt(r.get('wall'), 3), fmt(r.get('peak'), 2), r['status']))
+    table = header + '\n'.join(lines) + '\n'
+    print(table)
+
+    if a.write:
+        command = 'python3 bench/map_benchmarks.py ' + ' '.join(sys.argv[1:])
+        section = ('<!-- map-benchmarks:begin -->\n'
+                   'Measured %s on %s (%s), with\n\n```\n%s\n```\n\n%s'
+                   '<!-- map-benchmarks:end -->' % (datetime.date.today().isoformat(), platform.node(),
+                                                  platform.processor() or platform.machine(), command, table))
+        text = open(a.write).read() if os.path.exists(a.write) else ''
+        begin, end = '<!-- map-benchmarks:begin -->', '<!-- map-benchmarks:end -->'
+        if begin in text and end in text:
+            text = text[:text.index(begin)] + section + text[text.index(end) + len(end):]
+        else:
+            text += '\n' + section + '\n'
+        tmp = a.write + '.tmp'
+        with open(tmp, 'w') as f:
+            f.write(text)
+        os.replace(tmp, a.write)
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
