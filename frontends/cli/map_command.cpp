@@ -74,6 +74,10 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
     map->add_option("--report", a.report, "JSON report: options, iterations, times, verification");
     map->add_option("--record", a.record,
                     "folder for a ParaView time series of the assembly (assembly.pvd)");
+    map->add_flag(
+        "--no-polish", a.no_polish,
+        "keep the paper's schedule to its own termination at lambda_max instead of finishing in "
+        "vertex variables once assembled");
     map->add_flag("--force", a.force, "overwrite existing output files");
     map->add_flag("--quiet", a.quiet, "no progress rows on stderr");
     return map;
@@ -102,6 +106,7 @@ int run_map_command(const MapArguments& a) {
     options.mu = a.mu;
     options.s = a.s;
     options.lambda_max = a.lambda_max;
+    options.polish = !a.no_polish;
     options.variant = parse_variant(a.variant);
     if (!a.initialization.empty()) options.initialization = parse_initialization(a.initialization);
     options.seed = a.seed;
@@ -168,16 +173,17 @@ int run_map_command(const MapArguments& a) {
     if (recorder) series = recorder->finish();
 
     char times[200];
-    std::snprintf(times, sizeof times,
-                  "%.3f s (setup %.3f, disassembly %.3f, optimization %.3f, recovery %.3f, "
-                  "verification %.3f)",
-                  result.times.total, result.times.setup, result.times.disassembly,
-                  result.times.optimization, result.times.recovery, result.times.verification);
+    std::snprintf(
+        times, sizeof times,
+        "%.3f s (setup %.3f, disassembly %.3f, assembly %.3f, recovery %.3f, vertex stage %.3f, "
+        "verification %.3f)",
+        result.times.total, result.times.setup, result.times.disassembly, result.times.optimization,
+        result.times.recovery, result.times.polish, result.times.verification);
     std::cout << "  initial map: " << format_quality(result.initial_quality) << "\n"
               << "  result:      " << format_quality(result.final_quality) << "\n"
               << "  " << to_string(options.variant) << ", " << result.num_variables
-              << " variables, " << result.newton.num_steps() << " iterations, time " << times
-              << "\n"
+              << " variables, " << result.newton.num_steps() + result.polish.num_steps()
+              << " iterations, time " << times << "\n"
               << "  " << result.message << "\n"
               << "  wrote " << a.out << (a.report.empty() ? "" : ", " + a.report)
               << (series.empty() ? "" : ", " + series) << "\n";

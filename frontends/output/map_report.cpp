@@ -71,6 +71,12 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
                           {"anchored_simplices", r.num_anchored_simplices},
                           {"newton_termination", to_string(r.newton.termination)},
                           {"newton_message", r.newton.message}};
+    report["vertex_stage"] = {{"ran", r.polished},
+                              {"note", r.polish_note},
+                              {"iterations", r.polish.num_steps()},
+                              {"initial_energy", r.polish.initial_energy},
+                              {"final_energy", r.polish.final_energy},
+                              {"termination", to_string(r.polish.termination)}};
     nlohmann::json iterations = nlohmann::json::array();
     for (std::size_t k = 0; k < r.iterations.size(); ++k) {
         const AssemblyRecord& a = r.iterations[k];
@@ -93,6 +99,7 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
                        {"disassembly", r.times.disassembly},
                        {"optimization", r.times.optimization},
                        {"recovery", r.times.recovery},
+                       {"vertex_stage", r.times.polish},
                        {"verification", r.times.verification},
                        {"total", r.times.total},
                        {"newton_phases",

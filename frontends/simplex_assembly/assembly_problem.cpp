@@ -36,17 +36,6 @@ std::array<Index, N + M> concat(const std::array<Index, N>& a, const std::array<
     return c;
 }
 
-SimplexEnergyOptions simplex_options(const SimplexAssemblyOptions& o) {
-    SimplexEnergyOptions e;
-    e.barrier_distortion = o.distortion;
-    e.barrier.bound = o.bound;
-    e.barrier.s = o.s;
-    e.mapping_distortion = o.mapping_distortion;
-    e.mu = o.mu;
-    e.gamma = o.gamma;
-    return e;
-}
-
 }  // namespace
 
 template <int D>
@@ -54,7 +43,7 @@ AssemblyProblem<D>::AssemblyProblem(const AssemblyInput<D>& in,
                                     const SimplexAssemblyOptions& options)
     : variant_(options.variant), mesh_(in.mesh), frames_(in.frames) {
     const Index n = in.mesh->num_simplices();
-    const SimplexEnergy<D> simplex_energy(simplex_options(options), in.frames->volume,
+    const SimplexEnergy<D> simplex_energy(simplex_energy_options(options), in.frames->volume,
                                           options.mapping_distortion == DistortionType::kDifference
                                               ? in.reference_linear
                                               : std::vector<Mat<D>>{});

@@ -7,6 +7,7 @@
 
 #include "energies/distortion.h"
 #include "frontends/simplex_assembly/assembly_problem.h"
+#include "frontends/simplex_assembly/vertex_polish.h"
 #include "geometry/disassembly.h"
 #include "geometry/mesh_topology.h"
 #include "geometry/rest_frames.h"
@@ -212,6 +213,7 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
         log_line(observer.logger, line);
         if (observer.snapshot) observer.snapshot(row.iteration, corners_of(c.problem.variables()));
         if (row.iteration > 0 && assembly_value < options.assembly_tolerance) {
+            if (options.polish) return CallbackResult::kStopSuccess;  // vertex variables take over
             const double before = c.record.energy + c.record.energy_change;
             if (c.record.energy_change <= options.energy_tolerance * std::abs(before))
                 return CallbackResult::kStopSuccess;
@@ -242,12 +244,30 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
         pinned.row(v) = (A[s] * frames.corner(s, 0) + T[s]).transpose();
         fixed[v] = 1;
     }
-    const Eigen::MatrixXd recovered = recover_vertices<D>(mesh, frames, A, pinned, fixed);
+    Eigen::MatrixXd recovered = recover_vertices<D>(mesh, frames, A, pinned, fixed);
+    result.times.recovery += stage.lap();
+
+    if (options.polish) {
+        // The anchored simplices keep all their vertices: a free part has no rigid motion left.
+        for (Index s : in.anchored_simplices) {
+            for (int k = 0; k <= D; ++k) fixed[original.simplices(s, k)] = 1;
+        }
+        const SimplexEnergy<D> energy(simplex_energy_options(options), frames.volume,
+                                      options.mapping_distortion == DistortionType::kDifference
+                                          ? in.reference_linear
+                                          : std::vector<Mat<D>>{});
+        VertexPolish polish =
+            polish_vertices<D>(mesh, frames, energy, recovered, fixed, options, observer.logger);
+        result.polished = polish.ran;
+        result.polish_note = polish.note;
+        result.polish = polish.newton;
+        recovered = polish.positions;
+        result.times.polish += stage.lap();
+    }
     result.positions = (recovered / scale).rowwise() + map_center;
     for (Index v = 0; v < original.num_vertices(); ++v) {
         if (!topology.used_vertex[v]) result.positions.row(v) = initial_map.row(v);  // untouched
     }
-    result.times.recovery += stage.lap();
 
     // 5. Verification, from the output positions and the original rest shape.
     const RestFrames<D> rest = rest_frames<D>(original);
@@ -280,6 +300,12 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
         message << "Not assembled: E~ = " << result.final_assembly << " after "
                 << result.newton.num_steps() << " iterations ("
                 << to_string(result.newton.termination) << ")";
+    }
+    if (result.polished) {
+        message << ", then " << result.polish.num_steps() << " in vertex variables ("
+                << to_string(result.polish.termination) << ")";
+    } else if (options.polish) {
+        message << "; vertex stage " << result.polish_note;
     }
     message << ".";
     result.message = message.str();

@@ -8,6 +8,8 @@
 //      following section 4.4's schedule, until E~_assembly < 1e-12 and E changes by less than 1e-8
 //      (relative, within a step), or 200 iterations;
 //   4. recover: translations by gluing (Appendix), vertex positions by Eq. 6 with handles fixed;
+//      with options.polish (the default) the assembly stops as soon as E~_assembly < 1e-12 and
+//      Newton finishes on the vertex positions (vertex_polish.h);
 //   5. verify the recovered positions: inverted and degenerate simplices (against each rest
 //      orientation), handle error, distortion and the bound. Success means no inverted or
 //      degenerate simplex and every handle within tolerance, measured on the output.
@@ -53,6 +55,7 @@ struct StageTimes {
     double disassembly = 0.0;   ///< initial linear parts and their projection
     double optimization = 0.0;  ///< the Newton iterations
     double recovery = 0.0;      ///< gluing and Eq. 6
+    double polish = 0.0;        ///< the final stage in vertex variables
     double verification = 0.0;  ///< metrics of the output positions
     double total = 0.0;
 };
@@ -85,8 +88,11 @@ struct SimplexAssemblyResult {
     Verification verification;
     MapQuality initial_quality;  ///< of the initial map
     MapQuality final_quality;    ///< of the output positions
-    NewtonSummary newton;
+    NewtonSummary newton;        ///< the assembly stage
     std::vector<AssemblyRecord> iterations;
+    bool polished = false;    ///< the vertex stage ran
+    std::string polish_note;  ///< how it ended, or why it did not run
+    NewtonSummary polish;     ///< the vertex stage (empty when it did not run)
     StageTimes times;
     Index num_variables = 0;
     Index num_translation_simplices = 0;  ///< |Omega_s| for r-SA, N for f-SA

@@ -26,6 +26,17 @@ Variant parse_variant(const std::string& name) {
     throw InvalidArgumentError("unknown variant '" + name + "' (expected r, f or v)");
 }
 
+SimplexEnergyOptions simplex_energy_options(const SimplexAssemblyOptions& o) {
+    SimplexEnergyOptions e;
+    e.barrier_distortion = o.distortion;
+    e.barrier.bound = o.bound;
+    e.barrier.s = o.s;
+    e.mapping_distortion = o.mapping_distortion;
+    e.mu = o.mu;
+    e.gamma = o.gamma;
+    return e;
+}
+
 Initialization SimplexAssemblyOptions::effective_initialization() const {
     if (initialization) return *initialization;
     return distortion == DistortionType::kConformal ? Initialization::kClosestSimilarity

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "energies/distortion.h"
+#include "energies/simplex_energy.h"
 #include "geometry/disassembly.h"
 #include "optim/hessian_projection.h"
 #include "optim/linear_solver.h"
@@ -19,6 +20,8 @@ enum class Variant {
     kVertex,   ///< v-SA: per-simplex copies of the vertex positions
 };
 std::string to_string(Variant variant);
+
+struct SimplexAssemblyOptions;
 /// "r", "f", "v" (or "reduced", "full", "vertex"); throws InvalidArgumentError otherwise.
 Variant parse_variant(const std::string& name);
 
@@ -62,8 +65,14 @@ struct SimplexAssemblyOptions {
     double translation_shift = 0.0;
     LinearSolverType linear_solver = LinearSolverType::kCholmodSupernodal;
 
+    /// Finish in vertex variables (vertex_polish.h): stop the assembly as soon as E~_assembly is
+    /// below its tolerance, recover the mesh, and minimize mu E_m + E_C over its vertex positions
+    /// (handles fixed) until E changes by less than energy_tolerance. When false, the paper's
+    /// schedule runs to its own termination at lambda_max.
+    bool polish = true;
+
     // Termination: E~_assembly below assembly_tolerance and the relative change of E within a
-    // step below energy_tolerance, or limits.
+    // step below energy_tolerance, or limits (each stage has max_iterations).
     double assembly_tolerance = 1e-12;
     double energy_tolerance = 1e-8;
     int max_iterations = 200;
@@ -81,5 +90,8 @@ struct SimplexAssemblyOptions {
     /// Throws InvalidArgumentError naming the first bad field and its value.
     void validate() const;
 };
+
+/// The per-simplex energy's options (barrier, E_m) that `options` describe.
+SimplexEnergyOptions simplex_energy_options(const SimplexAssemblyOptions& options);
 
 }  // namespace sa

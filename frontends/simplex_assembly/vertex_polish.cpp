@@ -1,0 +1,75 @@
+#include "frontends/simplex_assembly/vertex_polish.h"
+
+#include <cstdio>
+
+#include "energies/vertex_copy_energies.h"
+#include "optim/newton_solver.h"
+#include "optim/problem.h"
+
+namespace sa {
+
+template <int D>
+VertexPolish polish_vertices(const SimplicialMesh& mesh, const RestFrames<D>& frames,
+                             const SimplexEnergy<D>& energy, const Eigen::MatrixXd& start,
+                             const std::vector<unsigned char>& fixed,
+                             const SimplexAssemblyOptions& options, const Logger& logger) {
+    VertexPolish result;
+    result.positions = start;
+    const Index nv = mesh.num_vertices();
+    // Variables: vertex-major coordinates, x[D v + c].
+    Eigen::VectorXd x(static_cast<Index>(D) * nv);
+    for (Index v = 0; v < nv; ++v) x.template segment<D>(D * v) = start.row(v).transpose();
+    std::vector<std::array<Index, D*(D + 1)>> elements(mesh.num_simplices());
+    for (Index s = 0; s < mesh.num_simplices(); ++s) {
+        for (int k = 0; k <= D; ++k) {
+            for (int c = 0; c < D; ++c) elements[s][D * k + c] = D * mesh.simplices(s, k) + c;
+        }
+    }
+    Problem problem(x);
+    problem.add_term("simplex energy", VertexSimplexEnergy<D>(energy, frames.edge_inverse),
+                     std::move(elements));
+    for (Index v = 0; v < nv; ++v) {
+        if (!fixed[v]) continue;
+        for (int c = 0; c < D; ++c) problem.set_fixed(D * v + c);
+    }
+    if (!std::isfinite(problem.value())) {
+        result.note = "skipped: the recovered mesh has an inverted simplex or one over the bound";
+        return result;
+    }
+    NewtonOptions newton;
+    newton.max_iterations = options.max_iterations;
+    newton.max_time_seconds = options.max_time_seconds;
+    newton.gradient_tolerance = 0.0;  // scale-dependent; the two relative tests decide
+    newton.function_tolerance = options.energy_tolerance;
+    newton.projection = options.projection;
+    newton.projection_epsilon = options.projection_epsilon;
+    newton.linear_solver = options.linear_solver;
+    newton.num_threads = options.num_threads;
+    newton.callbacks.push_back([&](const IterationContext& c) {
+        if (c.record.iteration > 0) {
+            char line[160];
+            std::snprintf(line, sizeof line, "P%3d  %10.4e  %9s  %9s  %8.2e  %2d  %6.2fs",
+                          c.record.iteration, c.record.energy, "-", "-", c.record.step_length,
+                          c.record.line_search_trials, c.record.cumulative_time);
+            log_line(logger, line);
+        }
+        return CallbackResult::kContinue;
+    });
+    result.newton = solve(problem, newton);
+    result.ran = true;
+    result.note = to_string(result.newton.termination);
+    for (Index v = 0; v < nv; ++v)
+        result.positions.row(v) = problem.variables().template segment<D>(D * v).transpose();
+    return result;
+}
+
+template VertexPolish polish_vertices<2>(const SimplicialMesh&, const RestFrames<2>&,
+                                         const SimplexEnergy<2>&, const Eigen::MatrixXd&,
+                                         const std::vector<unsigned char>&,
+                                         const SimplexAssemblyOptions&, const Logger&);
+template VertexPolish polish_vertices<3>(const SimplicialMesh&, const RestFrames<3>&,
+                                         const SimplexEnergy<3>&, const Eigen::MatrixXd&,
+                                         const std::vector<unsigned char>&,
+                                         const SimplexAssemblyOptions&, const Logger&);
+
+}  // namespace sa
