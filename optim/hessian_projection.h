@@ -22,6 +22,8 @@ namespace sa {
 enum class ProjectionMode { kClamp, kAbs, kShift, kNone };
 
 std::string to_string(ProjectionMode mode);
+/// "clamp", "abs", "shift" or "none"; throws InvalidArgumentError otherwise.
+ProjectionMode parse_projection(const std::string& name);
 
 /// True when every Gershgorin disc of `h` lies in [epsilon, inf).
 template <int N>

@@ -74,6 +74,13 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
     map->add_option("--report", a.report, "JSON report: options, iterations, times, verification");
     map->add_option("--record", a.record,
                     "folder for a ParaView time series of the assembly (assembly.pvd)");
+    map->add_option("--projection", a.projection,
+                    "per-simplex Hessian projection: clamp (eigenvalues to 1e-8), abs, shift (the "
+                    "paper's) or none")
+        ->capture_default_str();
+    map->add_option("--translation-shift", a.translation_shift,
+                    "Hessian shift on r-SA translations, times lambda (the paper's is 1e-6)")
+        ->capture_default_str();
     map->add_flag(
         "--no-polish", a.no_polish,
         "keep the paper's schedule to its own termination at lambda_max instead of finishing in "
@@ -107,6 +114,8 @@ int run_map_command(const MapArguments& a) {
     options.s = a.s;
     options.lambda_max = a.lambda_max;
     options.polish = !a.no_polish;
+    options.projection = parse_projection(a.projection);
+    options.translation_shift = a.translation_shift;
     options.variant = parse_variant(a.variant);
     if (!a.initialization.empty()) options.initialization = parse_initialization(a.initialization);
     options.seed = a.seed;

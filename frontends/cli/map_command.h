@@ -13,7 +13,8 @@ namespace sa::cli {
 struct MapArguments {
     std::string rest, init, handles, targets, out, report, record;
     std::string distortion = "conformal", energy = "none", variant = "r", initialization;
-    std::string bound = "inf";
+    std::string bound = "inf", projection = "clamp";
+    double translation_shift = 0.0;
     double mu = 1000.0, s = 1.0, lambda_max = 1e16;
     int max_iterations = 200, threads = 0;
     std::uint64_t seed = 1;
