@@ -23,6 +23,7 @@ import json
 import os
 import platform
 import resource
+import signal
 import subprocess
 import sys
 import tempfile
@@ -64,11 +65,15 @@ def run_measured(command, timeout):
                'w=time.time()-t\n'
                'm=resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss\n'
                'print(json.dumps(dict(code=p.returncode,wall=w,peak_kb=m,out=p.stdout,err=p.stderr[-4000:])))\n')
+    # A session of its own, so that a timeout kills `sa` too, not only the wrapper.
+    p = subprocess.Popen([sys.executable, '-c', wrapper] + command, stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True, start_new_session=True)
     try:
-        p = subprocess.run([sys.executable, '-c', wrapper] + command, capture_output=True, text=True,
-                           timeout=timeout)
-        return json.loads(p.stdout)
+        out, _ = p.communicate(timeout=timeout)
+        return json.loads(out)
     except subprocess.TimeoutExpired:
+        os.killpg(p.pid, signal.SIGKILL)
+        p.communicate()
         return None
 
 
@@ -140,7 +145,10 @@ def main():
         rep = json.load(open(report))
         row['elements'] = rep['input']['simplices']
         row['before'] = rep['initial_quality']['inverted']
-        row['iterations'] = len(rep['iterations']) - 1
+        stage = rep.get('vertex_stage', {}).get('iterations', 0)
+        row['iterations'] = '%d + %d' % (len(rep['iterations']) - 1, stage) if rep.get('mode') != 'submesh' \
+            else '%d (%d solves)' % (rep['submesh']['iterations'], rep['submesh']['solves'])
+        row['mode'] = rep.get('mode', 'full')
         row['assembled'] = rep['assembly']['assembled']
         row['sa_success'] = rep['verification']['success']
         tol = 1e-6 * diagonal_of_targets(case['check'])
@@ -158,17 +166,17 @@ def main():
         print('  ', row['status'], fmt(row['wall']), 's', file=sys.stderr, flush=True)
 
     header = ('| case | elements | inverted before | inverted after | handle error | '
-              'δ_con max / avg | δ_iso max / avg | iterations | assembled | wall time (s) | '
+              'δ_con max / avg | δ_iso max / avg | mode | iterations | assembled | wall time (s) | '
               'peak memory (GB) | check_map.py |\n'
-              '|---|---:|---:|---:|---:|---:|---:|---:|:---:|---:|---:|:---|\n')
+              '|---|---:|---:|---:|---:|---:|---:|:---:|---:|:---:|---:|---:|:---|\n')
     lines = []
     for r in rows:
         chk = r.get('check', {})
         con, iso = chk.get('conformal', [None, None]), chk.get('isometric', [None, None])
-        lines.append('| %s | %s | %s | %s | %s | %s / %s | %s / %s | %s | %s | %s | %s | %s |' % (
+        lines.append('| %s | %s | %s | %s | %s | %s / %s | %s / %s | %s | %s | %s | %s | %s | %s |' % (
             r['case'], fmt(r.get('elements')), fmt(r.get('before')), fmt(chk.get('inverted')),
             fmt(chk.get('handle_max_err')), fmt(con[0], 4), fmt(con[1], 4), fmt(iso[0], 4), fmt(iso[1], 4),
-            fmt(r.get('iterations')), {True: 'yes', False: 'no'}.get(r.get('assembled'), '-'),
+            r.get('mode', '-'), fmt(r.get('iterations')), {True: 'yes', False: 'no'}.get(r.get('assembled'), '-'),
             fmt(r.get('wall'), 3), fmt(r.get('peak'), 2), r['status']))
     table = header + '\n'.join(lines) + '\n'
     print(table)

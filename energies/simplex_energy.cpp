@@ -41,29 +41,44 @@ void SimplexEnergyOptions::validate() const {
     if (barrier_distortion != DistortionType::kConformal &&
         barrier_distortion != DistortionType::kVolumetric &&
         barrier_distortion != DistortionType::kIsometric) {
-        throw InvalidArgumentError("SimplexEnergyOptions.barrier_distortion = " +
-                                   to_string(barrier_distortion) +
-                                   ": must be conformal, volumetric or isometric");
+        throw InvalidArgumentError(
+            "SimplexEnergyOptions.barrier_distortion = " + to_string(barrier_distortion) +
+            ": must be conformal, volumetric or isometric");
     }
     if (!(barrier.bound > 1.0)) fail("barrier.bound", barrier.bound, "must be > 1 (or infinite)");
-    if (!(barrier.s > 0.0) || !std::isfinite(barrier.s)) fail("barrier.s", barrier.s, "must be > 0");
+    if (!(barrier.s > 0.0) || !std::isfinite(barrier.s))
+        fail("barrier.s", barrier.s, "must be > 0");
     if (!(mu >= 0.0) || !std::isfinite(mu)) fail("mu", mu, "must be finite and >= 0");
     if (!(gamma >= 0.0 && gamma <= 1.0)) fail("gamma", gamma, "must be in [0, 1]");
 }
 
 template <int D>
 SimplexEnergy<D>::SimplexEnergy(SimplexEnergyOptions options, std::vector<double> weights,
-                                 std::vector<Mat<D>> references)
-    : options_(std::move(options)), weights_(std::move(weights)), references_(std::move(references)) {
+                                std::vector<Mat<D>> references)
+    : options_(std::move(options)),
+      weights_(std::move(weights)),
+      references_(std::move(references)) {
     options_.validate();
     if (options_.mapping_distortion == DistortionType::kDifference &&
         references_.size() != weights_.size()) {
-        throw InvalidArgumentError("SimplexEnergy: the difference distortion needs one reference "
-                                   "matrix per simplex (" + std::to_string(weights_.size()) +
-                                   " simplices, " + std::to_string(references_.size()) +
-                                   " references)");
+        throw InvalidArgumentError(
+            "SimplexEnergy: the difference distortion needs one reference "
+            "matrix per simplex (" +
+            std::to_string(weights_.size()) + " simplices, " + std::to_string(references_.size()) +
+            " references)");
     }
     sigma_sum_ = options_.mapping_distortion && needs_sigma_sum(*options_.mapping_distortion);
+}
+
+template <int D>
+SimplexEnergy<D> SimplexEnergy<D>::subset(const std::vector<Index>& selected) const {
+    std::vector<double> weights;
+    std::vector<Mat<D>> references;
+    for (Index s : selected) {
+        weights.push_back(weights_[s]);
+        if (!references_.empty()) references.push_back(references_[s]);
+    }
+    return SimplexEnergy(options_, std::move(weights), std::move(references));
 }
 
 template <int D>
@@ -129,8 +144,8 @@ double SimplexEnergy<D>::max_step(Index, const Vec<arity>& a, const Vec<arity>& 
             // (J + 1/J) / 2 < K  <=>  K - sqrt(K^2 - 1) < J < K + sqrt(K^2 - 1).
             const double r = std::sqrt(K * K - 1.0);
             for (double threshold : {K - r, K + r}) {
-                step = std::min(step, smallest_positive_root(det[0] - threshold, det[1], det[2],
-                                                             det[3]));
+                step = std::min(step,
+                                smallest_positive_root(det[0] - threshold, det[1], det[2], det[3]));
             }
         }
     }

@@ -48,6 +48,10 @@ class SimplexEnergy {
                                   Mat<arity>& hessian) const;
     double max_step(Index i, const Vec<arity>& a, const Vec<arity>& da) const;
 
+    /// The same energy on the simplices `selected` only: element k of the result is simplex
+    /// selected[k] of this one.
+    SimplexEnergy subset(const std::vector<Index>& selected) const;
+
     /// The barrier distortion of A (+inf when det A <= 0).
     double barrier_distortion(const Mat<D>& A) const;
     const SimplexEnergyOptions& options() const { return options_; }

@@ -4,8 +4,8 @@
 // its scalar type and evaluate it with double (value only) or Dual<N> (value, gradient, Hessian):
 //
 //   template <class T> T energy(const Eigen::Matrix<T, 2, 1>& x) {
-//       using std::exp;            // so that exp(...) finds sa::exp for Dual and std::exp for double
-//       return exp(x[0]) * x[1];
+//       using std::exp;            // so that exp(...) finds sa::exp for Dual and std::exp for
+//       double return exp(x[0]) * x[1];
 //   }
 //   auto xd = sa::Dual<2>::variables(Vec<2>(1.0, 2.0));
 //   sa::Dual<2> e = energy(xd);    // e.value, e.gradient, e.hessian
@@ -161,11 +161,11 @@ Dual<N> atan2(const Dual<N>& y, const Dual<N>& x) {
     const double txx = 2.0 * x.value * y.value / (r2 * r2);
     const double txy = (y.value * y.value - x.value * x.value) / (r2 * r2);
     const Mat<N> gxy = x.gradient * y.gradient.transpose();
-    return Dual<N>(std::atan2(y.value, x.value), tx * x.gradient + ty * y.gradient,
-                   tx * x.hessian + ty * y.hessian +
-                       txx * (x.gradient * x.gradient.transpose() -
-                              y.gradient * y.gradient.transpose()) +
-                       txy * (gxy + gxy.transpose()));
+    return Dual<N>(
+        std::atan2(y.value, x.value), tx * x.gradient + ty * y.gradient,
+        tx * x.hessian + ty * y.hessian +
+            txx * (x.gradient * x.gradient.transpose() - y.gradient * y.gradient.transpose()) +
+            txy * (gxy + gxy.transpose()));
 }
 template <int N>
 bool isfinite(const Dual<N>& a) {
@@ -173,7 +173,9 @@ bool isfinite(const Dual<N>& a) {
 }
 
 /// The value of a double or a Dual.
-inline double value_of(double a) { return a; }
+inline double value_of(double a) {
+    return a;
+}
 template <int N>
 double value_of(const Dual<N>& a) {
     return a.value;

@@ -40,7 +40,8 @@ namespace sa {
 template <class E>
 concept ElementEnergy = requires(const E& e, Index i, const Vec<E::arity>& x, Vec<E::arity>& g,
                                  Mat<E::arity>& h) {
-    requires E::arity > 0;
+    requires E::arity >
+    0;
     { e.value(i, x) } -> std::convertible_to<double>;
     { e.value_gradient_hessian(i, x, g, h) } -> std::convertible_to<double>;
 };
@@ -51,15 +52,14 @@ concept HasMaxStep = requires(const E& e, Index i, const Vec<E::arity>& x) {
 };
 
 template <class E>
-concept HasValueGradient = requires(const E& e, Index i, const Vec<E::arity>& x,
-                                    Vec<E::arity>& g) {
+concept HasValueGradient = requires(const E& e, Index i, const Vec<E::arity>& x, Vec<E::arity>& g) {
     { e.value_gradient(i, x, g) } -> std::convertible_to<double>;
 };
 
 template <class E>
 concept HasClosedFormProjection = requires(const E& e, Index i, const Vec<E::arity>& x,
                                            Mat<E::arity>& h) {
-    { e.project_hessian(i, x, h) };
+    {e.project_hessian(i, x, h)};
 };
 
 template <class E>

@@ -9,21 +9,21 @@ namespace sa {
 
 /// Base of every exception the library throws on purpose.
 class Error : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
 /// A caller passed something invalid: an index out of range, an inconsistent size, an option
 /// outside its range. The message names the argument, element or field and its value.
 class InvalidArgumentError : public Error {
-public:
+  public:
     using Error::Error;
 };
 
 /// An input file or mesh is malformed. The message names the file and, where known, the line or
 /// the element.
 class InputError : public Error {
-public:
+  public:
     using Error::Error;
 };
 

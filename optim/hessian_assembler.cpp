@@ -183,21 +183,25 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     tbb::parallel_for(tbb::blocked_range<Index>(0, nf, kColumnGrain),
                       [&](const tbb::blocked_range<Index>& range) {
                           for (Index j = range.begin(); j != range.end(); ++j) {
-                              for_each_contribution(j, non_quadratic,
-                                                    [&](std::int64_t entry, const Incidence&,
-                                                        std::int64_t) { ++entry_source_begin_[entry]; });
+                              for_each_contribution(
+                                  j, non_quadratic,
+                                  [&](std::int64_t entry, const Incidence&, std::int64_t) {
+                                      ++entry_source_begin_[entry];
+                                  });
                           }
                       });
     counts_to_offsets(entry_source_begin_);
     entry_source_.resize(entry_source_begin_[nnz]);
     tbb::parallel_for(
-        tbb::blocked_range<Index>(0, nf, kColumnGrain), [&](const tbb::blocked_range<Index>& range) {
+        tbb::blocked_range<Index>(0, nf, kColumnGrain),
+        [&](const tbb::blocked_range<Index>& range) {
             for (Index j = range.begin(); j != range.end(); ++j) {
                 // Entries of column j are filled only from column j: a local cursor suffices.
                 std::vector<std::int64_t> cursor(entry_source_begin_.begin() + column_begin[j],
                                                  entry_source_begin_.begin() + column_begin[j + 1]);
                 for_each_contribution(
-                    j, non_quadratic, [&](std::int64_t entry, const Incidence& in, std::int64_t local) {
+                    j, non_quadratic,
+                    [&](std::int64_t entry, const Incidence& in, std::int64_t local) {
                         const std::int64_t N = problem.term(in.term).arity();
                         entry_source_[cursor[entry - column_begin[j]]++] =
                             hessian_offset_[in.term] + std::int64_t(in.element) * N * N + local;
@@ -218,17 +222,18 @@ HessianAssembler::HessianAssembler(const Problem& problem)
         std::vector<double> dense(nnz, 0.0);
         std::vector<unsigned char> touched(nnz, 0);
         auto this_term = [t](TermId u) { return u == t; };
-        tbb::parallel_for(tbb::blocked_range<Index>(0, nf, kColumnGrain),
-                          [&](const tbb::blocked_range<Index>& range) {
-                              for (Index j = range.begin(); j != range.end(); ++j) {
-                                  for_each_contribution(
-                                      j, this_term,
-                                      [&](std::int64_t entry, const Incidence& in, std::int64_t local) {
-                                          dense[entry] += h[std::size_t(in.element) * N * N + local];
-                                          touched[entry] = 1;
-                                      });
-                              }
-                          });
+        tbb::parallel_for(
+            tbb::blocked_range<Index>(0, nf, kColumnGrain),
+            [&](const tbb::blocked_range<Index>& range) {
+                for (Index j = range.begin(); j != range.end(); ++j) {
+                    for_each_contribution(
+                        j, this_term,
+                        [&](std::int64_t entry, const Incidence& in, std::int64_t local) {
+                            dense[entry] += h[std::size_t(in.element) * N * N + local];
+                            touched[entry] = 1;
+                        });
+                }
+            });
         QuadraticPart part{t, {}, {}};
         for (std::int64_t p = 0; p < nnz; ++p) {
             if (touched[p]) {
@@ -257,9 +262,9 @@ HessianAssembler::Evaluation HessianAssembler::evaluate(const Problem& problem,
     for (TermId t = 0; t < num_terms; ++t) {
         const Term& term = problem.term(t);
         const double w = term.weight();
-        const double v =
-            term.evaluate(x, w, gradient_slots_.data() + gradient_offset_[t],
-                          term.is_quadratic() ? nullptr : hessian_slots_.data() + hessian_offset_[t]);
+        const double v = term.evaluate(
+            x, w, gradient_slots_.data() + gradient_offset_[t],
+            term.is_quadratic() ? nullptr : hessian_slots_.data() + hessian_offset_[t]);
         result.term_values[t] = v;
         if (!(std::abs(v) < kInfinity)) {  // +inf: infeasible; NaN: broken evaluation
             result.energy = v;

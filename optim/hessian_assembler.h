@@ -26,7 +26,7 @@
 namespace sa {
 
 class HessianAssembler {
-public:
+  public:
     /// Builds the pattern and gather lists for `problem`'s current structure. Quadratic terms
     /// are evaluated at the problem's current variables (any point will do).
     explicit HessianAssembler(const Problem& problem);
@@ -58,7 +58,7 @@ public:
     /// Position of entry (j, j) in hessian().valuePtr().
     const std::vector<std::int64_t>& diagonal_positions() const { return diagonal_position_; }
 
-private:
+  private:
     struct QuadraticPart {
         TermId term;
         std::vector<std::int64_t> position;  ///< into the value array

@@ -10,11 +10,27 @@ namespace sa {
 
 std::string to_string(LinearSolverType type) {
     switch (type) {
-        case LinearSolverType::kCholmodSupernodal: return "cholmod-supernodal";
-        case LinearSolverType::kCholmodSimplicial: return "cholmod-simplicial";
-        case LinearSolverType::kEigenLDLT: return "eigen-ldlt";
+        case LinearSolverType::kAuto:
+            return "auto";
+        case LinearSolverType::kCholmodSupernodal:
+            return "cholmod-supernodal";
+        case LinearSolverType::kCholmodSimplicial:
+            return "cholmod-simplicial";
+        case LinearSolverType::kEigenLDLT:
+            return "eigen-ldlt";
     }
     return "unknown";
+}
+
+LinearSolverType parse_linear_solver(const std::string& name) {
+    for (LinearSolverType t :
+         {LinearSolverType::kAuto, LinearSolverType::kCholmodSupernodal,
+          LinearSolverType::kCholmodSimplicial, LinearSolverType::kEigenLDLT}) {
+        if (to_string(t) == name) return t;
+    }
+    throw InvalidArgumentError(
+        "unknown linear solver '" + name +
+        "' (expected auto, cholmod-supernodal, cholmod-simplicial or eigen-ldlt)");
 }
 
 namespace {
@@ -25,10 +41,13 @@ using EigenLDLT = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>;
 
 /// CHOLMOD reports through its own printf by default; the library stays silent and reports
 /// through statuses instead.
-void quiet(cholmod_common& common) { common.print = 0; }
+void quiet(cholmod_common& common) {
+    common.print = 0;
+}
 }  // namespace
 
 struct LinearSolver::Impl {
+    LinearSolverType requested;
     LinearSolverType type;
     std::optional<CholmodSupernodal> supernodal;
     std::optional<CholmodSimplicial> simplicial;
@@ -42,9 +61,17 @@ struct LinearSolver::Impl {
         simplicial.reset();
         ldlt.reset();
         switch (t) {
-            case LinearSolverType::kCholmodSupernodal: quiet(supernodal.emplace().cholmod()); break;
-            case LinearSolverType::kCholmodSimplicial: quiet(simplicial.emplace().cholmod()); break;
-            case LinearSolverType::kEigenLDLT: ldlt.emplace(); break;
+            case LinearSolverType::kCholmodSupernodal:
+                quiet(supernodal.emplace().cholmod());
+                break;
+            case LinearSolverType::kCholmodSimplicial:
+                quiet(simplicial.emplace().cholmod());
+                break;
+            case LinearSolverType::kEigenLDLT:
+                ldlt.emplace();
+                break;
+            case LinearSolverType::kAuto:
+                break;  // chosen by analyze(), from the size
         }
     }
 
@@ -52,8 +79,10 @@ struct LinearSolver::Impl {
     FactorizationStatus factorize_cholmod(Cholmod& solver, const SparseMatrix& lower) {
         solver.factorize(lower);
         const int status = solver.cholmod().status;
-        if (solver.info() == Eigen::Success && status >= CHOLMOD_OK) return FactorizationStatus::kSuccess;
-        if (status == CHOLMOD_NOT_POSDEF || (status >= CHOLMOD_OK && solver.info() != Eigen::Success)) {
+        if (solver.info() == Eigen::Success && status >= CHOLMOD_OK)
+            return FactorizationStatus::kSuccess;
+        if (status == CHOLMOD_NOT_POSDEF ||
+            (status >= CHOLMOD_OK && solver.info() != Eigen::Success)) {
             return FactorizationStatus::kNotPositiveDefinite;
         }
         fallback_reason = "CHOLMOD status " + std::to_string(status) + " (" +
@@ -79,6 +108,7 @@ struct LinearSolver::Impl {
 };
 
 LinearSolver::LinearSolver(LinearSolverType type) : impl_(std::make_unique<Impl>()) {
+    impl_->requested = type;
     impl_->make(type);
 }
 LinearSolver::~LinearSolver() = default;
@@ -90,10 +120,22 @@ void LinearSolver::analyze(const SparseMatrix& lower) {
         throw InvalidArgumentError("linear solver: matrix is " + std::to_string(lower.rows()) +
                                    " x " + std::to_string(lower.cols()) + ", not square");
     }
+    if (impl_->requested == LinearSolverType::kAuto) {
+        impl_->make(lower.rows() < kAutoSupernodalSize ? LinearSolverType::kEigenLDLT
+                                                       : LinearSolverType::kCholmodSupernodal);
+    }
     switch (impl_->type) {
-        case LinearSolverType::kCholmodSupernodal: impl_->supernodal->analyzePattern(lower); break;
-        case LinearSolverType::kCholmodSimplicial: impl_->simplicial->analyzePattern(lower); break;
-        case LinearSolverType::kEigenLDLT: impl_->ldlt->analyzePattern(lower); break;
+        case LinearSolverType::kCholmodSupernodal:
+            impl_->supernodal->analyzePattern(lower);
+            break;
+        case LinearSolverType::kCholmodSimplicial:
+            impl_->simplicial->analyzePattern(lower);
+            break;
+        case LinearSolverType::kEigenLDLT:
+            impl_->ldlt->analyzePattern(lower);
+            break;
+        case LinearSolverType::kAuto:
+            break;  // replaced above
     }
     impl_->analyzed = true;
 }
@@ -105,21 +147,33 @@ FactorizationStatus LinearSolver::factorize(const SparseMatrix& lower) {
             return impl_->factorize_cholmod(*impl_->supernodal, lower);
         case LinearSolverType::kCholmodSimplicial:
             return impl_->factorize_cholmod(*impl_->simplicial, lower);
-        case LinearSolverType::kEigenLDLT: return impl_->factorize_ldlt(lower);
+        case LinearSolverType::kEigenLDLT:
+            return impl_->factorize_ldlt(lower);
+        case LinearSolverType::kAuto:
+            break;
     }
     return FactorizationStatus::kFailed;
 }
 
 Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& rhs) const {
     switch (impl_->type) {
-        case LinearSolverType::kCholmodSupernodal: return impl_->supernodal->solve(rhs);
-        case LinearSolverType::kCholmodSimplicial: return impl_->simplicial->solve(rhs);
-        case LinearSolverType::kEigenLDLT: return impl_->ldlt->solve(rhs);
+        case LinearSolverType::kCholmodSupernodal:
+            return impl_->supernodal->solve(rhs);
+        case LinearSolverType::kCholmodSimplicial:
+            return impl_->simplicial->solve(rhs);
+        case LinearSolverType::kEigenLDLT:
+            return impl_->ldlt->solve(rhs);
+        case LinearSolverType::kAuto:
+            break;
     }
     return {};
 }
 
-LinearSolverType LinearSolver::active_type() const { return impl_->type; }
-const std::string& LinearSolver::fallback_reason() const { return impl_->fallback_reason; }
+LinearSolverType LinearSolver::active_type() const {
+    return impl_->type;
+}
+const std::string& LinearSolver::fallback_reason() const {
+    return impl_->fallback_reason;
+}
 
 }  // namespace sa

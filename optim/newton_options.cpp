@@ -8,7 +8,7 @@ namespace sa {
 namespace {
 
 class Checker {
-public:
+  public:
     explicit Checker(std::string* error) : error_(error) {}
     template <class T>
     void require(bool ok, const char* field, T value, const char* rule) {
@@ -22,12 +22,14 @@ public:
     }
     bool ok() const { return !failed_; }
 
-private:
+  private:
     std::string* error_;
     bool failed_ = false;
 };
 
-bool non_negative(double v) { return v >= 0.0 && !std::isnan(v); }
+bool non_negative(double v) {
+    return v >= 0.0 && !std::isnan(v);
+}
 
 }  // namespace
 

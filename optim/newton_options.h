@@ -61,7 +61,7 @@ struct NewtonOptions {
 
     LineSearchOptions line_search;
     RegularizationOptions regularization;
-    LinearSolverType linear_solver = LinearSolverType::kCholmodSupernodal;
+    LinearSolverType linear_solver = LinearSolverType::kAuto;
 
     /// Worker threads for evaluation and assembly; 0 = all cores. Results do not depend on it.
     int num_threads = 0;

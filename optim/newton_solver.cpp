@@ -86,9 +86,8 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
             times.callbacks += cb.seconds();
             finish(result == CallbackResult::kStopSuccess ? TerminationType::kUserSuccess
                                                           : TerminationType::kUserAbort,
-                   result == CallbackResult::kStopSuccess
-                       ? "a callback reported convergence"
-                       : "a callback aborted the solve");
+                   result == CallbackResult::kStopSuccess ? "a callback reported convergence"
+                                                          : "a callback aborted the solve");
             return true;
         }
         times.callbacks += cb.seconds();
@@ -102,9 +101,11 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
     summary.iterations.push_back(start);
     if (!(std::abs(energy) < kInfinity)) {
         return energy == kInfinity
-                   ? finish(TerminationType::kInfeasibleStart,
-                            "the energy is +inf at the initial variables (an element is infeasible)")
-                   : finish(TerminationType::kNonFinite, "the energy is NaN at the initial variables");
+                   ? finish(
+                         TerminationType::kInfeasibleStart,
+                         "the energy is +inf at the initial variables (an element is infeasible)")
+                   : finish(TerminationType::kNonFinite,
+                            "the energy is NaN at the initial variables");
     }
     if (run_callbacks()) return summary;
     if (nf == 0) return finish(TerminationType::kConverged, "no free variables");
@@ -177,7 +178,8 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
                                  last_regularization_ / opt.regularization.factor)
                       : opt.regularization.initial;
             while (true) {
-                for (Index j = 0; j < nf; ++j) values[diag_pos[j]] = diagonal[j] + tau * regularizable[j];
+                for (Index j = 0; j < nf; ++j)
+                    values[diag_pos[j]] = diagonal[j] + tau * regularizable[j];
                 status = linear_solver_->factorize(H);
                 ++factorizations;
                 if (status != FactorizationStatus::kNotPositiveDefinite) break;
@@ -197,7 +199,8 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
         Stopwatch solve_watch;
         const Eigen::VectorXd d = linear_solver_->solve(-g);
         times.solve += solve_watch.seconds();
-        if (!d.allFinite()) return finish(TerminationType::kNonFinite, "the Newton step is not finite");
+        if (!d.allFinite())
+            return finish(TerminationType::kNonFinite, "the Newton step is not finite");
         const double slope = g.dot(d);
         const double decrement = -0.5 * slope;
         if (opt.decrement_tolerance > 0.0 &&
@@ -208,8 +211,9 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
                                      opt.decrement_tolerance * std::max(1.0, std::abs(energy))));
         }
         if (!(slope < 0.0)) {
-            return finish(TerminationType::kLineSearchFailed,
-                          format("the Newton step is not a descent direction (g.d = ", slope) + ")");
+            return finish(
+                TerminationType::kLineSearchFailed,
+                format("the Newton step is not a descent direction (g.d = ", slope) + ")");
         }
 
         // Line search.
@@ -262,11 +266,13 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
 
         if (run_callbacks()) return summary;
         if (opt.function_tolerance > 0.0 &&
-            previous_energy - energy <= opt.function_tolerance * std::max(1.0, std::abs(previous_energy))) {
-            return finish(TerminationType::kConverged,
-                          format("energy change ", previous_energy - energy) +
-                              format(" <= function_tolerance * max(1, |E|) = ",
-                                     opt.function_tolerance * std::max(1.0, std::abs(previous_energy))));
+            previous_energy - energy <=
+                opt.function_tolerance * std::max(1.0, std::abs(previous_energy))) {
+            return finish(
+                TerminationType::kConverged,
+                format("energy change ", previous_energy - energy) +
+                    format(" <= function_tolerance * max(1, |E|) = ",
+                           opt.function_tolerance * std::max(1.0, std::abs(previous_energy))));
         }
         if (total.seconds() > opt.max_time_seconds) {
             return finish(TerminationType::kMaxTime,

@@ -24,7 +24,7 @@
 namespace sa {
 
 class NewtonSolver {
-public:
+  public:
     explicit NewtonSolver(NewtonOptions options = {});
     ~NewtonSolver();
 
@@ -36,7 +36,7 @@ public:
     /// Throws InvalidArgumentError when the options are invalid.
     NewtonSummary solve(Problem& problem);
 
-private:
+  private:
     NewtonSummary run(Problem& problem);
 
     NewtonOptions options_;

@@ -7,15 +7,24 @@ namespace sa {
 
 std::string to_string(TerminationType type) {
     switch (type) {
-        case TerminationType::kConverged: return "converged";
-        case TerminationType::kUserSuccess: return "stopped by callback (success)";
-        case TerminationType::kMaxIterations: return "iteration limit";
-        case TerminationType::kMaxTime: return "time limit";
-        case TerminationType::kUserAbort: return "aborted by callback";
-        case TerminationType::kLineSearchFailed: return "line search failed";
-        case TerminationType::kFactorizationFailed: return "factorization failed";
-        case TerminationType::kInfeasibleStart: return "infeasible start";
-        case TerminationType::kNonFinite: return "non-finite value";
+        case TerminationType::kConverged:
+            return "converged";
+        case TerminationType::kUserSuccess:
+            return "stopped by callback (success)";
+        case TerminationType::kMaxIterations:
+            return "iteration limit";
+        case TerminationType::kMaxTime:
+            return "time limit";
+        case TerminationType::kUserAbort:
+            return "aborted by callback";
+        case TerminationType::kLineSearchFailed:
+            return "line search failed";
+        case TerminationType::kFactorizationFailed:
+            return "factorization failed";
+        case TerminationType::kInfeasibleStart:
+            return "infeasible start";
+        case TerminationType::kNonFinite:
+            return "non-finite value";
     }
     return "unknown";
 }

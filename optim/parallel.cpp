@@ -5,7 +5,9 @@
 
 namespace sa {
 
-int default_thread_count() { return tbb::info::default_concurrency(); }
+int default_thread_count() {
+    return tbb::info::default_concurrency();
+}
 
 bool set_blas_threads(int threads) {
     // Looked up at run time so that the library links against any BLAS.

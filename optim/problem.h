@@ -3,8 +3,8 @@
 // elements. Its energy is E(x) = sum_t weight_t * sum_e energy_t(element e's variables).
 //
 //   sa::Problem problem(x0);
-//   problem.add_term("distortion", MyEnergy{rest}, elements);        // elements: {{i, j, ...}, ...}
-//   problem.set_fixed(7);                                            // a pinned variable
+//   problem.add_term("distortion", MyEnergy{rest}, elements);        // elements: {{i, j, ...},
+//   ...} problem.set_fixed(7);                                            // a pinned variable
 //   sa::NewtonSummary summary = sa::NewtonSolver(options).solve(problem);
 //
 // Variables may be fixed (they keep their value and leave the linear system), grouped into named
@@ -41,7 +41,7 @@ struct VariableBlock {
 };
 
 class Problem {
-public:
+  public:
     /// A problem over `variables.size()` variables, starting from `variables`.
     explicit Problem(Eigen::VectorXd variables);
     Problem(const Problem&) = delete;
@@ -57,8 +57,8 @@ public:
     /// Adds `energy` over `elements` (each names E::arity variable indices) with `weight`.
     /// Throws InvalidArgumentError naming the term and element for an index out of range.
     template <ElementEnergy E>
-    TermId add_term(std::string name, E energy,
-                    std::vector<std::array<Index, E::arity>> elements, double weight = 1.0) {
+    TermId add_term(std::string name, E energy, std::vector<std::array<Index, E::arity>> elements,
+                    double weight = 1.0) {
         for (std::size_t e = 0; e < elements.size(); ++e) {
             for (Index v : elements[e]) check_element_index(name, e, v);
         }
@@ -102,7 +102,7 @@ public:
     /// A number unique to this problem object within the process.
     std::uint64_t id() const { return id_; }
 
-private:
+  private:
     void check_element_index(const std::string& term, std::size_t element, Index v) const;
 
     Eigen::VectorXd variables_;

@@ -12,11 +12,11 @@
 namespace sa {
 
 class ProgressPrinter {
-public:
+  public:
     explicit ProgressPrinter(std::ostream& out) : out_(&out) {}
     CallbackResult operator()(const IterationContext& context) const;
 
-private:
+  private:
     std::ostream* out_;
 };
 

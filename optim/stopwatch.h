@@ -6,7 +6,7 @@
 namespace sa {
 
 class Stopwatch {
-public:
+  public:
     Stopwatch() : start_(Clock::now()) {}
     void restart() { start_ = Clock::now(); }
     double seconds() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
@@ -18,7 +18,7 @@ public:
         return s;
     }
 
-private:
+  private:
     using Clock = std::chrono::steady_clock;
     Clock::time_point start_;
 };

@@ -26,7 +26,7 @@
 namespace sa {
 
 class Term {
-public:
+  public:
     Term(std::string name, double weight) : name_(std::move(name)), weight_(weight) {}
     virtual ~Term() = default;
     Term(const Term&) = delete;
@@ -59,23 +59,24 @@ public:
     /// The unweighted value of element `e` (for reports and tests).
     virtual double element_value(Index e, const Eigen::VectorXd& x) const = 0;
 
-protected:
+  protected:
     /// Elements per task: fixed, so that sums are split the same way on any thread count.
     static constexpr Index kGrain = 512;
 
-private:
+  private:
     std::string name_;
     double weight_;
 };
 
 template <ElementEnergy E>
 class EnergyTerm final : public Term {
-public:
+  public:
     static constexpr int N = E::arity;
     using Element = std::array<Index, N>;
 
     EnergyTerm(std::string name, E energy, std::vector<Element> elements, double weight)
-        : Term(std::move(name), weight), energy_(std::move(energy)),
+        : Term(std::move(name), weight),
+          energy_(std::move(energy)),
           elements_(std::move(elements)) {}
 
     const E& energy() const { return energy_; }
@@ -169,8 +170,8 @@ public:
                 range(), kInfinity,
                 [&](const tbb::blocked_range<Index>& r, double smallest) {
                     for (Index e = r.begin(); e != r.end(); ++e) {
-                        smallest = std::min(smallest,
-                                            double(energy_.max_step(e, gather(x, e), gather(dx, e))));
+                        smallest = std::min(
+                            smallest, double(energy_.max_step(e, gather(x, e), gather(dx, e))));
                     }
                     return smallest;
                 },
@@ -182,7 +183,7 @@ public:
         return energy_.value(e, gather(x, e));
     }
 
-private:
+  private:
     tbb::blocked_range<Index> range() const {
         return tbb::blocked_range<Index>(0, num_elements(), kGrain);
     }

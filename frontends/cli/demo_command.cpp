@@ -118,8 +118,9 @@ int run_demo_command(const DemoArguments& a) {
         std::printf("| %s | %ld | %ld | %.3f | %.3f | %d | %.2f | %s |\n",
                     bound < kInfinity ? "4" : "inf", long(r.initial_quality.inverted),
                     long(r.final_quality.inverted), r.final_quality.conformal.max,
-                    r.final_quality.conformal.mean, r.newton.num_steps() + r.polish.num_steps(),
-                    r.times.total, r.success ? "yes" : "NO");
+                    r.final_quality.conformal.mean,
+                    r.newton.num_steps() + r.vertex_stage.num_steps(), r.times.total,
+                    r.success ? "yes" : "NO");
         std::fflush(stdout);
         if (!r.success) std::cerr << "sa demo: " << r.message << '\n';
         all = all && r.success;

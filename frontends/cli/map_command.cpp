@@ -74,6 +74,20 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
     map->add_option("--report", a.report, "JSON report: options, iterations, times, verification");
     map->add_option("--record", a.record,
                     "folder for a ParaView time series of the assembly (assembly.pvd)");
+    map->add_option("--mode", a.mode,
+                    "auto (submeshes for large meshes with few bad simplices), full or submesh")
+        ->capture_default_str();
+    map->add_option("--rings", a.rings, "submesh mode: rings around the bad simplices (m)")
+        ->capture_default_str();
+    map->add_option("--max-rings", a.max_rings,
+                    "submesh mode: most rings a failing region grows to (m_max)")
+        ->capture_default_str();
+    map->add_option("--max-rounds", a.max_rounds, "submesh mode: rounds after the first (l_max)")
+        ->capture_default_str();
+    map->add_option("--linear-solver", a.linear_solver,
+                    "auto (Eigen LDL^T below 5000 unknowns, CHOLMOD supernodal above), "
+                    "cholmod-supernodal, cholmod-simplicial or eigen-ldlt")
+        ->capture_default_str();
     map->add_option("--projection", a.projection,
                     "per-simplex Hessian projection: clamp (eigenvalues to 1e-8), abs, shift (the "
                     "paper's) or none")
@@ -82,7 +96,7 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
                     "Hessian shift on r-SA translations, times lambda (the paper's is 1e-6)")
         ->capture_default_str();
     map->add_flag(
-        "--no-polish", a.no_polish,
+        "--no-vertex-stage", a.no_vertex_stage,
         "keep the paper's schedule to its own termination at lambda_max instead of finishing in "
         "vertex variables once assembled");
     map->add_flag("--force", a.force, "overwrite existing output files");
@@ -113,7 +127,12 @@ int run_map_command(const MapArguments& a) {
     options.mu = a.mu;
     options.s = a.s;
     options.lambda_max = a.lambda_max;
-    options.polish = !a.no_polish;
+    options.vertex_stage = !a.no_vertex_stage;
+    options.mode = parse_solve_mode(a.mode);
+    options.linear_solver = parse_linear_solver(a.linear_solver);
+    options.rings = a.rings;
+    options.max_rings = a.max_rings;
+    options.max_rounds = a.max_rounds;
     options.projection = parse_projection(a.projection);
     options.translation_shift = a.translation_shift;
     options.variant = parse_variant(a.variant);
@@ -187,11 +206,11 @@ int run_map_command(const MapArguments& a) {
         "%.3f s (setup %.3f, disassembly %.3f, assembly %.3f, recovery %.3f, vertex stage %.3f, "
         "verification %.3f)",
         result.times.total, result.times.setup, result.times.disassembly, result.times.optimization,
-        result.times.recovery, result.times.polish, result.times.verification);
+        result.times.recovery, result.times.vertex_stage, result.times.verification);
     std::cout << "  initial map: " << format_quality(result.initial_quality) << "\n"
               << "  result:      " << format_quality(result.final_quality) << "\n"
               << "  " << to_string(options.variant) << ", " << result.num_variables
-              << " variables, " << result.newton.num_steps() + result.polish.num_steps()
+              << " variables, " << result.newton.num_steps() + result.vertex_stage.num_steps()
               << " iterations, time " << times << "\n"
               << "  " << result.message << "\n"
               << "  wrote " << a.out << (a.report.empty() ? "" : ", " + a.report)

@@ -13,12 +13,13 @@ namespace sa::cli {
 struct MapArguments {
     std::string rest, init, handles, targets, out, report, record;
     std::string distortion = "conformal", energy = "none", variant = "r", initialization;
-    std::string bound = "inf", projection = "clamp";
+    std::string bound = "inf", projection = "clamp", mode = "auto", linear_solver = "auto";
+    int rings = 4, max_rings = 20, max_rounds = 2;
     double translation_shift = 0.0;
     double mu = 1000.0, s = 1.0, lambda_max = 1e16;
     int max_iterations = 200, threads = 0;
     std::uint64_t seed = 1;
-    bool force = false, quiet = false, no_polish = false;
+    bool force = false, quiet = false, no_vertex_stage = false;
 };
 
 /// Adds the subcommand to `app`; `arguments` is filled when it is parsed.

@@ -60,6 +60,31 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
                               {"max_distortion", number(v.max_distortion)},
                               {"within_bound", v.within_bound()}};
     report["message"] = r.message;
+    report["mode"] = to_string(r.mode);
+    if (r.mode == SolveMode::kSubmesh) {
+        const SubmeshStats& m = r.submesh;
+        nlohmann::json rounds = nlohmann::json::array();
+        for (const SubmeshRound& x : m.rounds) {
+            rounds.push_back({{"round", x.round},
+                              {"bad_simplices", x.bad_simplices},
+                              {"regions", x.regions},
+                              {"colors", x.colors},
+                              {"solved", x.solved},
+                              {"failed", x.failed},
+                              {"remaining", x.remaining},
+                              {"time", x.time}});
+        }
+        report["submesh"] = {
+            {"start", m.start},
+            {"start_bad", m.start_bad},
+            {"rounds", rounds},
+            {"solves", m.solves},
+            {"iterations", m.iterations},
+            {"largest_submesh", m.largest_submesh},
+            {"max_rings", m.max_rings},
+            {"times",
+             {{"start", m.start_time}, {"regions", m.region_time}, {"solves", m.solve_time}}}};
+    }
     report["initial_quality"] = quality_json(r.initial_quality);
     report["final_quality"] = quality_json(r.final_quality);
     report["assembly"] = {{"assembled", r.assembled},
@@ -71,12 +96,12 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
                           {"anchored_simplices", r.num_anchored_simplices},
                           {"newton_termination", to_string(r.newton.termination)},
                           {"newton_message", r.newton.message}};
-    report["vertex_stage"] = {{"ran", r.polished},
-                              {"note", r.polish_note},
-                              {"iterations", r.polish.num_steps()},
-                              {"initial_energy", r.polish.initial_energy},
-                              {"final_energy", r.polish.final_energy},
-                              {"termination", to_string(r.polish.termination)}};
+    report["vertex_stage"] = {{"ran", r.vertex_stage_ran},
+                              {"note", r.vertex_stage_note},
+                              {"iterations", r.vertex_stage.num_steps()},
+                              {"initial_energy", r.vertex_stage.initial_energy},
+                              {"final_energy", r.vertex_stage.final_energy},
+                              {"termination", to_string(r.vertex_stage.termination)}};
     nlohmann::json iterations = nlohmann::json::array();
     for (std::size_t k = 0; k < r.iterations.size(); ++k) {
         const AssemblyRecord& a = r.iterations[k];
@@ -99,7 +124,7 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
                        {"disassembly", r.times.disassembly},
                        {"optimization", r.times.optimization},
                        {"recovery", r.times.recovery},
-                       {"vertex_stage", r.times.polish},
+                       {"vertex_stage", r.times.vertex_stage},
                        {"verification", r.times.verification},
                        {"total", r.times.total},
                        {"newton_phases",

@@ -8,8 +8,8 @@
 //      following section 4.4's schedule, until E~_assembly < 1e-12 and E changes by less than 1e-8
 //      (relative, within a step), or 200 iterations;
 //   4. recover: translations by gluing (Appendix), vertex positions by Eq. 6 with handles fixed;
-//      with options.polish (the default) the assembly stops as soon as E~_assembly < 1e-12 and
-//      Newton finishes on the vertex positions (vertex_polish.h);
+//      with options.vertex_stage (the default) the assembly stops as soon as E~_assembly < 1e-12
+//      and Newton finishes on the vertex positions (vertex_stage.h);
 //   5. verify the recovered positions: inverted and degenerate simplices (against each rest
 //      orientation), handle error, distortion and the bound. Success means no inverted or
 //      degenerate simplex and every handle within tolerance, measured on the output.
@@ -55,7 +55,7 @@ struct StageTimes {
     double disassembly = 0.0;   ///< initial linear parts and their projection
     double optimization = 0.0;  ///< the Newton iterations
     double recovery = 0.0;      ///< gluing and Eq. 6
-    double polish = 0.0;        ///< the final stage in vertex variables
+    double vertex_stage = 0.0;  ///< the final stage in vertex variables
     double verification = 0.0;  ///< metrics of the output positions
     double total = 0.0;
 };
@@ -78,6 +78,31 @@ struct Verification {
     std::string describe() const;
 };
 
+/// One round of the submesh mode.
+struct SubmeshRound {
+    int round = 0;
+    Index bad_simplices = 0;  ///< at the start of the round
+    Index regions = 0;        ///< submeshes built around them (merged where they touch)
+    int colors = 0;       ///< colours of the conflict graph (1 unless regions grew into each other)
+    Index solved = 0;     ///< solves kept (verified)
+    Index failed = 0;     ///< regions given up at m_max rings
+    Index remaining = 0;  ///< bad simplices after the round
+    double time = 0.0;
+};
+
+struct SubmeshStats {
+    std::string start;    ///< "recovered (Eq. 6)" or "initial map"
+    Index start_bad = 0;  ///< bad simplices of the start
+    std::vector<SubmeshRound> rounds;
+    Index solves = 0;           ///< submesh solves, retries included
+    Index iterations = 0;       ///< Newton steps summed over them
+    Index largest_submesh = 0;  ///< simplices
+    int max_rings = 0;
+    double start_time = 0.0, region_time = 0.0, solve_time = 0.0;
+    /// One sentence.
+    std::string describe() const;
+};
+
 struct SimplexAssemblyResult {
     Eigen::MatrixXd positions;  ///< #V x d output map
     bool success = false;       ///< verification passed
@@ -85,14 +110,16 @@ struct SimplexAssemblyResult {
     bool assembled = false;     ///< E~_assembly reached the tolerance
     double final_assembly = 0.0;
     double final_lambda = 0.0;
+    SolveMode mode = SolveMode::kFull;  ///< the mode that ran
+    SubmeshStats submesh;               ///< when mode is kSubmesh
     Verification verification;
     MapQuality initial_quality;  ///< of the initial map
     MapQuality final_quality;    ///< of the output positions
     NewtonSummary newton;        ///< the assembly stage
     std::vector<AssemblyRecord> iterations;
-    bool polished = false;    ///< the vertex stage ran
-    std::string polish_note;  ///< how it ended, or why it did not run
-    NewtonSummary polish;     ///< the vertex stage (empty when it did not run)
+    bool vertex_stage_ran = false;  ///< the vertex stage ran
+    std::string vertex_stage_note;  ///< how it ended, or why it did not run
+    NewtonSummary vertex_stage;     ///< the vertex stage (empty when it did not run)
     StageTimes times;
     Index num_variables = 0;
     Index num_translation_simplices = 0;  ///< |Omega_s| for r-SA, N for f-SA

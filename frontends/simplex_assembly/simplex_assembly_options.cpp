@@ -19,6 +19,25 @@ std::string to_string(Variant variant) {
     return "unknown";
 }
 
+std::string to_string(SolveMode mode) {
+    switch (mode) {
+        case SolveMode::kAuto:
+            return "auto";
+        case SolveMode::kFull:
+            return "full";
+        case SolveMode::kSubmesh:
+            return "submesh";
+    }
+    return "unknown";
+}
+
+SolveMode parse_solve_mode(const std::string& name) {
+    for (SolveMode mode : {SolveMode::kAuto, SolveMode::kFull, SolveMode::kSubmesh}) {
+        if (to_string(mode) == name) return mode;
+    }
+    throw InvalidArgumentError("unknown mode '" + name + "' (expected auto, full or submesh)");
+}
+
 Variant parse_variant(const std::string& name) {
     if (name == "r" || name == "reduced" || name == "r-SA") return Variant::kReduced;
     if (name == "f" || name == "full" || name == "f-SA") return Variant::kFull;
@@ -68,10 +87,17 @@ void SimplexAssemblyOptions::validate() const {
         fail("translation_shift", translation_shift, "must be finite and >= 0");
     if (!(assembly_tolerance > 0.0)) fail("assembly_tolerance", assembly_tolerance, "must be > 0");
     if (!(energy_tolerance >= 0.0)) fail("energy_tolerance", energy_tolerance, "must be >= 0");
+    if (!(handover_ratio >= 1.0)) fail("handover_ratio", handover_ratio, "must be >= 1");
     if (max_iterations < 1) fail("max_iterations", max_iterations, "must be >= 1");
     if (!(max_time_seconds > 0.0)) fail("max_time_seconds", max_time_seconds, "must be > 0");
     if (!(handle_tolerance > 0.0)) fail("handle_tolerance", handle_tolerance, "must be > 0");
     if (num_threads < 0) fail("num_threads", num_threads, "must be >= 0 (0 = all cores)");
+    if (rings < 1) fail("rings", rings, "must be >= 1");
+    if (max_rings < rings) fail("max_rings", max_rings, "must be >= rings");
+    if (max_rounds < 0) fail("max_rounds", max_rounds, "must be >= 0");
+    if (start_iterations < 0) fail("start_iterations", start_iterations, "must be >= 0");
+    if (!(auto_bad_share >= 0.0 && auto_bad_share <= 1.0))
+        fail("auto_bad_share", auto_bad_share, "must be in [0, 1]");
 }
 
 }  // namespace sa

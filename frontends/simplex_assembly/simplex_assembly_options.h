@@ -13,6 +13,12 @@
 
 namespace sa {
 
+/// Whole mesh at once, or submeshes around the bad simplices (section 4.4, "Speedup").
+enum class SolveMode { kAuto, kFull, kSubmesh };
+std::string to_string(SolveMode mode);
+/// "auto", "full" or "submesh"; throws InvalidArgumentError otherwise.
+SolveMode parse_solve_mode(const std::string& name);
+
 /// Which variables carry the translations (section 5.1, "Variants of simplex assembly").
 enum class Variant {
     kReduced,  ///< r-SA: A_i for every simplex, T_p only on the Steiner-tree simplices (default)
@@ -63,13 +69,18 @@ struct SimplexAssemblyOptions {
     /// optimum being the identity). Redundant translations are still handled: the
     /// regularization tau of step 3 reaches them when a factorization fails.
     double translation_shift = 0.0;
-    LinearSolverType linear_solver = LinearSolverType::kCholmodSupernodal;
+    LinearSolverType linear_solver = LinearSolverType::kAuto;
 
-    /// Finish in vertex variables (vertex_polish.h): stop the assembly as soon as E~_assembly is
+    /// Finish in vertex variables (vertex_stage.h): stop the assembly as soon as E~_assembly is
     /// below its tolerance, recover the mesh, and minimize mu E_m + E_C over its vertex positions
     /// (handles fixed) until E changes by less than energy_tolerance. When false, the paper's
     /// schedule runs to its own termination at lambda_max.
-    bool polish = true;
+    bool vertex_stage = true;
+    /// The assembly hands over to the vertex stage once the mesh recovered from the current A_i
+    /// (checked every iteration) has an energy mu E_m + E_C at most this many times that of the
+    /// disassembled simplices: a valid but far more distorted mesh would leave the vertex stage
+    /// with the slow start the paper avoids by disassembling.
+    double handover_ratio = 1.5;
 
     // Termination: E~_assembly below assembly_tolerance and the relative change of E within a
     // step below energy_tolerance, or limits (each stage has max_iterations).
@@ -81,6 +92,23 @@ struct SimplexAssemblyOptions {
     /// Verification: handles must end within this fraction of the bounding-box diagonal of the
     /// initial map from their targets.
     double handle_tolerance = 1e-6;
+
+    // The submesh strategy (submesh_assembly.h), with the paper's m, m_max and l_max.
+    SolveMode mode = SolveMode::kAuto;
+    int rings = 4;       ///< m: rings of simplices around the bad ones
+    int max_rings = 20;  ///< m_max: a region that fails grows by 2 rings up to this
+    int max_rounds = 2;  ///< l_max: rounds after the first
+    /// Local/global iterations (the disassembly's projection, then Eq. 6) that make the
+    /// submesh mode's start; the first is the paper's M^0, more are ARAP (rotations) or ASAP
+    /// (similarities) iterations. The iterate with the fewest bad simplices is kept.
+    int start_iterations = 30;
+    /// kAuto takes the full solve for meshes of at most this many triangles or tetrahedra (a
+    /// tetrahedron's 9 variables couple with its 4 neighbours: the full 3D system costs far more),
+    /// and for meshes whose initial map has more than `auto_bad_share` inverted or degenerate
+    /// simplices; the submesh mode otherwise.
+    Index auto_full_triangles = 20000;
+    Index auto_full_tetrahedra = 1000;
+    double auto_bad_share = 0.25;
 
     /// Worker threads; 0 = all cores. Results do not depend on it.
     int num_threads = 0;

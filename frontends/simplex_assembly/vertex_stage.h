@@ -19,7 +19,7 @@
 
 namespace sa {
 
-struct VertexPolish {
+struct VertexStage {
     bool ran = false;           ///< false when the start was not feasible (an inverted simplex)
     std::string note;           ///< why it did not run, or how it ended
     Eigen::MatrixXd positions;  ///< #V x D (the start when it did not run)
@@ -28,7 +28,7 @@ struct VertexPolish {
 
 /// `start` #V x D in the driver's normalized coordinates; `fixed` flags handles and anchors.
 template <int D>
-VertexPolish polish_vertices(const SimplicialMesh& mesh, const RestFrames<D>& frames,
+VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& frames,
                              const SimplexEnergy<D>& energy, const Eigen::MatrixXd& start,
                              const std::vector<unsigned char>& fixed,
                              const SimplexAssemblyOptions& options, const Logger& logger);

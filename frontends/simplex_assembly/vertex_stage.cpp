@@ -1,4 +1,4 @@
-#include "frontends/simplex_assembly/vertex_polish.h"
+#include "frontends/simplex_assembly/vertex_stage.h"
 
 #include <cstdio>
 
@@ -9,24 +9,35 @@
 namespace sa {
 
 template <int D>
-VertexPolish polish_vertices(const SimplicialMesh& mesh, const RestFrames<D>& frames,
+VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& frames,
                              const SimplexEnergy<D>& energy, const Eigen::MatrixXd& start,
                              const std::vector<unsigned char>& fixed,
                              const SimplexAssemblyOptions& options, const Logger& logger) {
-    VertexPolish result;
+    VertexStage result;
     result.positions = start;
     const Index nv = mesh.num_vertices();
     // Variables: vertex-major coordinates, x[D v + c].
     Eigen::VectorXd x(static_cast<Index>(D) * nv);
     for (Index v = 0; v < nv; ++v) x.template segment<D>(D * v) = start.row(v).transpose();
-    std::vector<std::array<Index, D*(D + 1)>> elements(mesh.num_simplices());
+    // Simplices whose vertices are all fixed keep a constant energy: they are left out.
+    std::vector<std::array<Index, D*(D + 1)>> elements;
+    std::vector<Index> moving;
+    std::vector<Mat<D>> rest_inverse;
     for (Index s = 0; s < mesh.num_simplices(); ++s) {
+        bool moves = false;
+        for (int k = 0; k <= D; ++k) moves |= !fixed[mesh.simplices(s, k)];
+        if (!moves) continue;
+        moving.push_back(s);
+        rest_inverse.push_back(frames.edge_inverse[s]);
+        std::array<Index, D*(D + 1)> e;
         for (int k = 0; k <= D; ++k) {
-            for (int c = 0; c < D; ++c) elements[s][D * k + c] = D * mesh.simplices(s, k) + c;
+            for (int c = 0; c < D; ++c) e[D * k + c] = D * mesh.simplices(s, k) + c;
         }
+        elements.push_back(e);
     }
     Problem problem(x);
-    problem.add_term("simplex energy", VertexSimplexEnergy<D>(energy, frames.edge_inverse),
+    problem.add_term("simplex energy",
+                     VertexSimplexEnergy<D>(energy.subset(moving), std::move(rest_inverse)),
                      std::move(elements));
     for (Index v = 0; v < nv; ++v) {
         if (!fixed[v]) continue;
@@ -63,11 +74,11 @@ VertexPolish polish_vertices(const SimplicialMesh& mesh, const RestFrames<D>& fr
     return result;
 }
 
-template VertexPolish polish_vertices<2>(const SimplicialMesh&, const RestFrames<2>&,
+template VertexStage run_vertex_stage<2>(const SimplicialMesh&, const RestFrames<2>&,
                                          const SimplexEnergy<2>&, const Eigen::MatrixXd&,
                                          const std::vector<unsigned char>&,
                                          const SimplexAssemblyOptions&, const Logger&);
-template VertexPolish polish_vertices<3>(const SimplicialMesh&, const RestFrames<3>&,
+template VertexStage run_vertex_stage<3>(const SimplicialMesh&, const RestFrames<3>&,
                                          const SimplexEnergy<3>&, const Eigen::MatrixXd&,
                                          const std::vector<unsigned char>&,
                                          const SimplexAssemblyOptions&, const Logger&);

@@ -1,0 +1,217 @@
+#include "frontends/simplex_assembly/prepared_problem.h"
+
+#include <set>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
+#include "energies/distortion.h"
+#include "geometry/disassembly.h"
+#include "geometry/vertex_recovery.h"
+#include "optim/errors.h"
+#include "optim/stopwatch.h"
+
+namespace sa {
+
+namespace {
+
+void check_input(const MappingProblem& p, int d) {
+    const std::string& src = p.source;
+    if (p.initial.rows() != p.mesh.num_vertices()) {
+        throw InputError(src + ": the initial map has " + std::to_string(p.initial.rows()) +
+                         " vertices, the rest mesh " + std::to_string(p.mesh.num_vertices()));
+    }
+    if (p.initial.cols() < d) {
+        throw InputError(src + ": the initial map has " + std::to_string(p.initial.cols()) +
+                         " coordinates per vertex, a map of " +
+                         (d == 2 ? "triangles" : "tetrahedra") + " needs " + std::to_string(d));
+    }
+    if (!p.initial.leftCols(d).allFinite())
+        throw InputError(src + ": the initial map has a non-finite coordinate");
+    std::set<Index> seen;
+    for (Index h : p.handles) {
+        if (h < 0 || h >= p.mesh.num_vertices()) {
+            throw InputError(src + ": handle vertex " + std::to_string(h) + " outside [0, " +
+                             std::to_string(p.mesh.num_vertices()) + ")");
+        }
+        if (!seen.insert(h).second)
+            throw InputError(src + ": handle vertex " + std::to_string(h) + " is listed twice");
+    }
+    if (p.targets.size() > 0 &&
+        (p.targets.rows() != Index(p.handles.size()) || p.targets.cols() < d)) {
+        throw InputError(src + ": " + std::to_string(p.targets.rows()) + " handle targets for " +
+                         std::to_string(p.handles.size()) + " handles");
+    }
+}
+
+}  // namespace
+
+template <int D>
+std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
+                                                    const SimplexAssemblyOptions& options,
+                                                    StageTimes& times) {
+    Stopwatch stage;
+    auto p = std::make_unique<PreparedProblem<D>>();
+    p->input = &input;
+    const SimplicialMesh& original = input.mesh;
+    validate_mesh(original, input.source);
+    check_input(input, D);
+    p->topology = mesh_topology(original, input.source);
+    for (Index h : input.handles) {
+        if (!p->topology.used_vertex[h]) {
+            throw InputError(input.source + ": handle vertex " + std::to_string(h) +
+                             " belongs to no simplex");
+        }
+    }
+    const Index n = original.num_simplices();
+    p->initial_map = input.initial.leftCols(D);
+    p->target_rows.resize(input.handles.size(), D);
+    for (std::size_t k = 0; k < input.handles.size(); ++k) {
+        p->target_rows.row(k) = input.targets.size() > 0
+                                    ? Eigen::RowVectorXd(input.targets.row(k).head(D))
+                                    : Eigen::RowVectorXd(p->initial_map.row(input.handles[k]));
+    }
+
+    // Normalize by the rest diagonal; each side centred on its own bounding box.
+    p->scale = 1.0 / bounding_box_diagonal(original.vertices);
+    const Eigen::RowVectorXd rest_center =
+        0.5 * (original.vertices.colwise().minCoeff() + original.vertices.colwise().maxCoeff());
+    p->map_center =
+        0.5 * (p->initial_map.colwise().minCoeff() + p->initial_map.colwise().maxCoeff());
+    p->mesh = original;
+    p->mesh.vertices = (original.vertices.rowwise() - rest_center) * p->scale;
+    p->start = (p->initial_map.rowwise() - p->map_center) * p->scale;
+    p->frames = rest_frames<D>(p->mesh);
+    times.setup += stage.lap();
+
+    // Disassembly (section 4.2).
+    AssemblyInput<D>& in = p->assembly;
+    in.mesh = &p->mesh;
+    in.topology = &p->topology;
+    in.frames = &p->frames;
+    in.reference_linear = linear_parts<D>(p->mesh, p->frames, p->start);
+    p->initial_quality = map_quality<D>(in.reference_linear, p->frames.volume);
+    in.start_linear = in.reference_linear;
+    project_linear_parts<D>(in.start_linear, options.effective_initialization(), options.seed);
+    in.start_translation.resize(n);
+    for (Index s = 0; s < n; ++s) {
+        Vec<D> centroid = Vec<D>::Zero();
+        for (int k = 0; k <= D; ++k) centroid += p->start.row(original.simplices(s, k)).transpose();
+        in.start_translation[s] = centroid / double(D + 1);
+    }
+    times.disassembly += stage.lap();
+
+    // Handles, targets and an anchor for every connected part without a handle: its least
+    // distorted non-inverted simplex in the initial map (its first simplex if all are inverted).
+    in.handles = input.handles;
+    for (Index k = 0; k < p->target_rows.rows(); ++k) {
+        in.targets.push_back(((p->target_rows.row(k) - p->map_center) * p->scale).transpose());
+    }
+    Index components = 0;
+    const std::vector<Index> component = p->topology.simplex_components(&components);
+    std::vector<unsigned char> has_handle(components, 0);
+    for (Index h : input.handles) {
+        has_handle[component[p->topology.simplices_of_vertex[p->topology.vertex_begin[h]]]] = 1;
+    }
+    std::vector<Index> anchor(components, -1);
+    for (Index s = 0; s < n; ++s) {
+        const Index c = component[s];
+        if (has_handle[c]) continue;
+        if (anchor[c] < 0) {
+            anchor[c] = s;
+            continue;
+        }
+        const SimplexQuality& q = p->initial_quality.per_simplex[s];
+        const SimplexQuality& best = p->initial_quality.per_simplex[anchor[c]];
+        const bool usable = !q.inverted && !q.degenerate,
+                   best_usable = !best.inverted && !best.degenerate;
+        if ((usable && !best_usable) || (usable == best_usable && q.conformal < best.conformal))
+            anchor[c] = s;
+    }
+    for (Index c = 0; c < components; ++c) {
+        if (anchor[c] >= 0) in.anchored_simplices.push_back(anchor[c]);
+    }
+    p->energy = std::make_unique<SimplexEnergy<D>>(
+        simplex_energy_options(options), p->frames.volume,
+        options.mapping_distortion == DistortionType::kDifference ? in.reference_linear
+                                                                  : std::vector<Mat<D>>{});
+
+    // Eq. 6: handles at their targets, one vertex of each anchored simplex at its start image.
+    p->pinned = p->start;
+    std::vector<unsigned char> fixed(p->mesh.num_vertices(), 0);
+    for (std::size_t k = 0; k < in.handles.size(); ++k) {
+        p->pinned.row(in.handles[k]) = in.targets[k].transpose();
+        fixed[in.handles[k]] = 1;
+    }
+    for (Index s : in.anchored_simplices) {
+        const Index v = p->mesh.simplices(s, 0);
+        p->pinned.row(v) =
+            (in.start_linear[s] * p->frames.corner(s, 0) + in.start_translation[s]).transpose();
+        fixed[v] = 1;
+    }
+    p->recovery = std::make_unique<VertexRecovery<D>>(p->mesh, p->frames, std::move(fixed));
+    times.setup += stage.lap();
+    return p;
+}
+
+template <int D>
+double mesh_energy(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions) {
+    const std::vector<Mat<D>> A = linear_parts<D>(p.mesh, p.frames, positions);
+    return tbb::parallel_deterministic_reduce(
+        tbb::blocked_range<Index>(0, p.mesh.num_simplices(), 1024), 0.0,
+        [&](const tbb::blocked_range<Index>& r, double sum) {
+            for (Index s = r.begin(); s != r.end() && sum < kInfinity; ++s) {
+                sum += p.energy->value(s, Eigen::Map<const Vec<D * D>>(A[s].data()));
+            }
+            return sum;
+        },
+        std::plus<double>());
+}
+
+template <int D>
+void verify_result(const MappingProblem& input, const SimplexAssemblyOptions& options,
+                   SimplexAssemblyResult& result) {
+    const SimplicialMesh& original = input.mesh;
+    const RestFrames<D> rest = rest_frames<D>(original);
+    const std::vector<Mat<D>> out = linear_parts<D>(original, rest, result.positions);
+    result.final_quality = map_quality<D>(out, rest.volume);
+    Verification& v = result.verification;
+    v = Verification{};
+    v.simplices = original.num_simplices();
+    v.inverted = result.final_quality.inverted;
+    v.degenerate = result.final_quality.degenerate;
+    v.handles = static_cast<Index>(input.handles.size());
+    for (std::size_t k = 0; k < input.handles.size(); ++k) {
+        const Eigen::RowVectorXd target =
+            input.targets.size() > 0
+                ? Eigen::RowVectorXd(input.targets.row(k).head(D))
+                : Eigen::RowVectorXd(input.initial.row(input.handles[k]).head(D));
+        v.handle_error =
+            std::max(v.handle_error, (result.positions.row(input.handles[k]) - target).norm());
+    }
+    v.handle_tolerance =
+        options.handle_tolerance * bounding_box_diagonal(input.initial.leftCols(D));
+    v.bound = options.bound;
+    for (Index s = 0; s < original.num_simplices(); ++s) {
+        const MatrixInvariants<double> m = matrix_invariants<D>(out[s], false);
+        const double d =
+            m.J > 0.0 ? distortion<D>(options.distortion, m, options.gamma) : kInfinity;
+        v.max_distortion = std::max(v.max_distortion, d);
+    }
+    result.success = v.passed();
+}
+
+template std::unique_ptr<PreparedProblem<2>> prepare_problem<2>(const MappingProblem&,
+                                                                const SimplexAssemblyOptions&,
+                                                                StageTimes&);
+template std::unique_ptr<PreparedProblem<3>> prepare_problem<3>(const MappingProblem&,
+                                                                const SimplexAssemblyOptions&,
+                                                                StageTimes&);
+template double mesh_energy<2>(const PreparedProblem<2>&, const Eigen::MatrixXd&);
+template double mesh_energy<3>(const PreparedProblem<3>&, const Eigen::MatrixXd&);
+template void verify_result<2>(const MappingProblem&, const SimplexAssemblyOptions&,
+                               SimplexAssemblyResult&);
+template void verify_result<3>(const MappingProblem&, const SimplexAssemblyOptions&,
+                               SimplexAssemblyResult&);
+
+}  // namespace sa

@@ -1,0 +1,60 @@
+#pragma once
+// What both solve modes of the driver share: the input checked, normalized (rest diagonal 1,
+// each side centred on its bounding box) and disassembled, with an anchor per connected part
+// without handles; vertex recovery with the handles at their targets; verification of output
+// positions. Internal to frontends/simplex_assembly.
+
+#include <memory>
+
+#include "energies/simplex_energy.h"
+#include "frontends/simplex_assembly/assembly_problem.h"
+#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "geometry/mesh_topology.h"
+#include "geometry/rest_frames.h"
+#include "geometry/vertex_recovery.h"
+
+namespace sa {
+
+template <int D>
+struct PreparedProblem {
+    const MappingProblem* input = nullptr;
+    MeshTopology topology;
+    SimplicialMesh mesh;  ///< normalized rest shape
+    RestFrames<D> frames;
+    double scale = 1.0;             ///< normalized = (original - center) * scale
+    Eigen::RowVectorXd map_center;  ///< of the initial map's bounding box
+    Eigen::MatrixXd initial_map;    ///< #V x D, original units
+    Eigen::MatrixXd target_rows;    ///< #handles x D, original units
+    Eigen::MatrixXd start;          ///< the initial map, normalized
+    AssemblyInput<D> assembly;      ///< disassembled; its pointers refer to this object
+    MapQuality initial_quality;
+    /// The per-simplex energy mu w_i d_m(A_i) + E_C(A_i) of these options.
+    std::unique_ptr<SimplexEnergy<D>> energy;
+    /// Eq. 6 with the handles at their targets and the first vertex of every anchored simplex
+    /// at its image (`pinned`, normalized; the matrix is factored once).
+    Eigen::MatrixXd pinned;
+    std::unique_ptr<VertexRecovery<D>> recovery;
+
+    Eigen::MatrixXd to_original(const Eigen::MatrixXd& normalized) const {
+        return (normalized / scale).rowwise() + map_center;
+    }
+};
+
+/// Checks, normalizes and disassembles `input` (throws InputError on bad input).
+template <int D>
+std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
+                                                    const SimplexAssemblyOptions& options,
+                                                    StageTimes& times);
+
+/// The energy sum_i mu w_i d_m(A_i) + E_C(A_i) of the map `positions` (normalized): +inf unless
+/// every simplex is positively oriented (against its rest orientation) and under the bound.
+template <int D>
+double mesh_energy(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions);
+
+/// Measures result.positions (original units) against the rest shape and the targets: fills
+/// final_quality, verification and success.
+template <int D>
+void verify_result(const MappingProblem& input, const SimplexAssemblyOptions& options,
+                   SimplexAssemblyResult& result);
+
+}  // namespace sa

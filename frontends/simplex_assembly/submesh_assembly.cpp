@@ -1,0 +1,259 @@
+#include "frontends/simplex_assembly/submesh_assembly.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <cstdio>
+
+#include "energies/distortion.h"
+#include "frontends/simplex_assembly/vertex_stage.h"
+#include "geometry/disassembly.h"
+#include "geometry/submesh.h"
+#include "optim/parallel.h"
+#include "optim/stopwatch.h"
+
+namespace sa {
+
+namespace {
+
+/// Simplices of `positions` (original units) that the barrier rejects: inverted, at or over the
+/// bound, or so distorted that E_C overflows; and degenerate ones.
+template <int D>
+std::vector<Index> bad_simplices(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions) {
+    const std::vector<Mat<D>> A =
+        linear_parts<D>(p.mesh, p.frames, (positions.rowwise() - p.map_center) * p.scale);
+    const MapQuality q = map_quality<D>(A, p.frames.volume);
+    std::vector<Index> bad;
+    for (Index s = 0; s < p.mesh.num_simplices(); ++s) {
+        if (q.per_simplex[s].degenerate ||
+            !std::isfinite(p.energy->value(s, Eigen::Map<const Vec<D * D>>(A[s].data())))) {
+            bad.push_back(s);
+        }
+    }
+    return bad;
+}
+
+struct Region {
+    std::vector<Index> simplices;
+    int rings = 0;
+};
+
+/// Solves one region on `positions` (original units); returns the local result.
+SimplexAssemblyResult solve_region(const MappingProblem& input, const MeshTopology& topology,
+                                   const Eigen::MatrixXd& positions,
+                                   const std::vector<unsigned char>& is_handle,
+                                   const Region& region, const SimplexAssemblyOptions& options,
+                                   int threads, const Logger& logger, Submesh& sub) {
+    sub = extract_submesh(input.mesh, topology, region.simplices);
+    MappingProblem local;
+    local.source =
+        input.source + " (submesh of " + std::to_string(region.simplices.size()) + " simplices)";
+    local.mesh = sub.mesh;
+    local.initial.resize(sub.vertices.size(), positions.cols());
+    for (std::size_t i = 0; i < sub.vertices.size(); ++i) {
+        local.initial.row(i) = positions.row(sub.vertices[i]);
+        if (sub.on_region_boundary[i] || is_handle[sub.vertices[i]])
+            local.handles.push_back(static_cast<Index>(i));
+    }
+    SimplexAssemblyOptions o = options;
+    o.mode = SolveMode::kFull;
+    o.num_threads = threads;
+    SimplexAssemblyObserver observer;
+    if (logger) observer.logger = [&logger](const std::string& line) { logger("    " + line); };
+    return run_simplex_assembly(local, o, observer);
+}
+
+}  // namespace
+
+template <int D>
+SolveMode choose_mode(const PreparedProblem<D>& p, const SimplexAssemblyOptions& options) {
+    if (options.mode != SolveMode::kAuto) return options.mode;
+    const Index n = p.mesh.num_simplices();
+    if (n <= (D == 2 ? options.auto_full_triangles : options.auto_full_tetrahedra))
+        return SolveMode::kFull;
+    const double bad =
+        double(p.initial_quality.inverted + p.initial_quality.degenerate) / double(n);
+    return bad > options.auto_bad_share ? SolveMode::kFull : SolveMode::kSubmesh;
+}
+
+template <int D>
+void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& options,
+                     const SimplexAssemblyObserver& observer, SimplexAssemblyResult& result) {
+    Stopwatch stage;
+    SubmeshStats& stats = result.submesh;
+    const MappingProblem& input = *p.input;
+    const int threads = options.num_threads > 0 ? options.num_threads : default_thread_count();
+    tbb::task_arena arena(threads);
+
+    // The start: the initial map (handles at their targets), then local/global iterations (the
+    // paper's M^0 is the first: each A_i projected as in the disassembly, vertices by Eq. 6; more
+    // of them are ARAP or ASAP iterations, which spread large handle motions). Keep the iterate
+    // with the fewest bad simplices.
+    Eigen::MatrixXd current = p.start;
+    for (std::size_t k = 0; k < input.handles.size(); ++k)
+        current.row(input.handles[k]) = p.assembly.targets[k].transpose();
+    Eigen::MatrixXd positions = p.to_original(current);
+    std::vector<Index> bad = bad_simplices<D>(p, positions);
+    stats.start = "initial map";
+    for (int iteration = 1; iteration <= options.start_iterations && !bad.empty(); ++iteration) {
+        std::vector<Mat<D>> A = linear_parts<D>(p.mesh, p.frames, current);
+        project_linear_parts<D>(A, options.effective_initialization(), options.seed);
+        current = p.recovery->recover(A, p.pinned);
+        const Eigen::MatrixXd candidate = p.to_original(current);
+        std::vector<Index> candidate_bad = bad_simplices<D>(p, candidate);
+        if (candidate_bad.size() < bad.size()) {
+            positions = candidate;
+            bad.swap(candidate_bad);
+            stats.start = "local/global iteration " + std::to_string(iteration);
+        }
+    }
+    stats.start_bad = static_cast<Index>(bad.size());
+    stats.start_time = stage.lap();
+    std::vector<unsigned char> is_handle(input.mesh.num_vertices(), 0);
+    for (Index h : input.handles) is_handle[h] = 1;
+    char line[320];
+    std::snprintf(line, sizeof line, "submesh mode: start from the %s, %ld bad simplices of %ld",
+                  stats.start.c_str(), long(bad.size()), long(p.mesh.num_simplices()));
+    log_line(observer.logger, line);
+
+    for (int round = 0; !bad.empty() && round <= options.max_rounds; ++round) {
+        Stopwatch round_watch;
+        SubmeshRound record;
+        record.round = round;
+        record.bad_simplices = static_cast<Index>(bad.size());
+        std::vector<Region> pending;
+        for (auto& simplices : vertex_connected_regions(
+                 input.mesh, p.topology, grow_rings(input.mesh, p.topology, bad, options.rings))) {
+            pending.push_back({std::move(simplices), options.rings});
+        }
+        record.regions = static_cast<Index>(pending.size());
+        stats.region_time += round_watch.lap();
+        while (!pending.empty()) {
+            // Regions conflict when they share a vertex.
+            std::vector<std::vector<Index>> owners(input.mesh.num_vertices());
+            for (std::size_t r = 0; r < pending.size(); ++r) {
+                for (Index s : pending[r].simplices) {
+                    for (int k = 0; k <= D; ++k) {
+                        auto& list = owners[input.mesh.simplices(s, k)];
+                        if (list.empty() || list.back() != Index(r)) list.push_back(Index(r));
+                    }
+                }
+            }
+            std::vector<std::vector<Index>> conflicts(pending.size());
+            for (const auto& list : owners) {
+                for (std::size_t a = 0; a < list.size(); ++a)
+                    for (std::size_t b = 0; b < list.size(); ++b)
+                        if (a != b) conflicts[list[a]].push_back(list[b]);
+            }
+            for (auto& c : conflicts) {
+                std::sort(c.begin(), c.end());
+                c.erase(std::unique(c.begin(), c.end()), c.end());
+            }
+            const std::vector<int> color = greedy_coloring(conflicts);
+            const int colors =
+                pending.empty() ? 0 : *std::max_element(color.begin(), color.end()) + 1;
+            record.colors = std::max(record.colors, colors);
+            stats.region_time += round_watch.lap();
+            std::vector<Region> retry;
+            for (int c = 0; c < colors; ++c) {
+                std::vector<Index> members;
+                for (std::size_t r = 0; r < pending.size(); ++r) {
+                    if (color[r] == c) members.push_back(Index(r));
+                }
+                std::string sizes;
+                for (Index m : members) {
+                    sizes += (sizes.empty() ? "" : ", ") +
+                             std::to_string(pending[m].simplices.size()) + " (" +
+                             std::to_string(pending[m].rings) + " rings)";
+                }
+                log_line(observer.logger, "  solving " + std::to_string(members.size()) +
+                                              " region" + (members.size() == 1 ? "" : "s") +
+                                              " of " + sizes.substr(0, 200) + " simplices");
+                std::vector<SimplexAssemblyResult> solved(members.size());
+                std::vector<Submesh> subs(members.size());
+                const int inner = members.size() == 1 ? threads : 1;
+                arena.execute([&] {
+                    tbb::parallel_for(std::size_t(0), members.size(), [&](std::size_t i) {
+                        solved[i] = solve_region(
+                            input, p.topology, positions, is_handle, pending[members[i]], options,
+                            inner, members.size() == 1 ? observer.logger : Logger{}, subs[i]);
+                    });
+                });
+                for (std::size_t i = 0; i < members.size(); ++i) {
+                    const Region& region = pending[members[i]];
+                    const SimplexAssemblyResult& r = solved[i];
+                    ++stats.solves;
+                    stats.iterations += r.newton.num_steps() + r.vertex_stage.num_steps();
+                    stats.largest_submesh =
+                        std::max(stats.largest_submesh, Index(region.simplices.size()));
+                    stats.max_rings = std::max(stats.max_rings, region.rings);
+                    const bool ok =
+                        r.success && (options.bound == kInfinity || r.verification.within_bound());
+                    if (ok) {
+                        ++record.solved;
+                        for (std::size_t v = 0; v < subs[i].vertices.size(); ++v) {
+                            if (!subs[i].on_region_boundary[v] && !is_handle[subs[i].vertices[v]]) {
+                                positions.row(subs[i].vertices[v]) = r.positions.row(v);
+                            }
+                        }
+                    } else {
+                        std::snprintf(line, sizeof line,
+                                      "  region of %ld simplices (%d rings) not repaired: %s",
+                                      long(region.simplices.size()), region.rings,
+                                      r.message.substr(0, 120).c_str());
+                        log_line(observer.logger, line);
+                    }
+                    if (ok) {
+                    } else if (region.rings + 2 <= options.max_rings) {
+                        retry.push_back({grow_rings(input.mesh, p.topology, region.simplices, 2),
+                                         region.rings + 2});
+                    } else {
+                        ++record.failed;
+                    }
+                }
+            }
+            stats.solve_time += round_watch.lap();
+            pending.swap(retry);
+        }
+        bad = bad_simplices<D>(p, positions);
+        record.remaining = static_cast<Index>(bad.size());
+        record.time = round_watch.seconds();
+        stats.region_time += round_watch.lap();
+        std::snprintf(line, sizeof line,
+                      "round %d: %ld bad simplices, %ld regions (%d colours), %ld solved, %ld "
+                      "given up; %ld bad left",
+                      round, long(record.bad_simplices), long(record.regions), record.colors,
+                      long(record.solved), long(record.failed), long(record.remaining));
+        log_line(observer.logger, line);
+        stats.rounds.push_back(record);
+    }
+    result.assembled = bad.empty();
+    // The repaired mesh is valid: finish with the vertex stage on the whole mesh, which lowers the
+    // distortion everywhere (its system has D unknowns per vertex) and never leaves the valid set.
+    if (options.vertex_stage && bad.empty()) {
+        Stopwatch vertex_watch;
+        std::vector<unsigned char> fixed(p.mesh.num_vertices(), 0);
+        for (Index h : input.handles) fixed[h] = 1;
+        for (Index s : p.assembly.anchored_simplices) {
+            for (int k = 0; k <= D; ++k) fixed[p.mesh.simplices(s, k)] = 1;
+        }
+        VertexStage vertex = run_vertex_stage<D>(p.mesh, p.frames, *p.energy,
+                                                 (positions.rowwise() - p.map_center) * p.scale,
+                                                 fixed, options, observer.logger);
+        result.vertex_stage_ran = vertex.ran;
+        result.vertex_stage_note = vertex.note;
+        result.vertex_stage = vertex.newton;
+        positions = p.to_original(vertex.positions);
+        result.times.vertex_stage += vertex_watch.seconds();
+    }
+    result.positions = positions;
+}
+
+template SolveMode choose_mode<2>(const PreparedProblem<2>&, const SimplexAssemblyOptions&);
+template SolveMode choose_mode<3>(const PreparedProblem<3>&, const SimplexAssemblyOptions&);
+template void solve_submeshes<2>(PreparedProblem<2>&, const SimplexAssemblyOptions&,
+                                 const SimplexAssemblyObserver&, SimplexAssemblyResult&);
+template void solve_submeshes<3>(PreparedProblem<3>&, const SimplexAssemblyOptions&,
+                                 const SimplexAssemblyObserver&, SimplexAssemblyResult&);
+
+}  // namespace sa

@@ -1,0 +1,36 @@
+#pragma once
+// The submesh strategy of section 4.4 ("Speedup"), and the choice between it and the full solve.
+//
+// Round l = 0, 1, ..., l_max:
+//   1. positions: for l = 0 the best of the initial map and up to `start_iterations` local/global
+//      iterations from it (the first is the paper's M^0: the disassembled linear parts, Eq. 6;
+//      the next ones are ARAP or ASAP iterations); then the result of the previous round;
+//   2. bad simplices: those the barrier rejects (inverted, at or over the bound, or so distorted
+//      that E_C overflows) and degenerate ones;
+//      none: done;
+//   3. regions: m rings of simplices around the bad ones (over shared vertices); regions that
+//      share a vertex are merged, so each region is solved once and regions never move a vertex
+//      another one uses;
+//   4. each region is a mapping problem of its own: its vertices shared with simplices outside
+//      it are fixed (with the original handles); it is solved by the full Simplex Assembly
+//      (mode kFull) and its result kept only if verified; a region that fails grows by two rings
+//      and is solved again, up to m_max rings. Regions that overlap after growing conflict: the
+//      conflict graph is coloured and each colour's regions are solved side by side with TBB.
+// Results do not depend on the thread count: each region's solve is deterministic, regions of
+// one colour share no vertex, and colours run in a fixed order.
+
+#include "frontends/simplex_assembly/prepared_problem.h"
+
+namespace sa {
+
+/// kFull or kSubmesh for `options.mode`, resolving kAuto by the mesh's size and its share of bad
+/// simplices in the initial map.
+template <int D>
+SolveMode choose_mode(const PreparedProblem<D>& prepared, const SimplexAssemblyOptions& options);
+
+/// Fills result.positions (original units) and result.submesh.
+template <int D>
+void solve_submeshes(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& options,
+                     const SimplexAssemblyObserver& observer, SimplexAssemblyResult& result);
+
+}  // namespace sa
