@@ -46,14 +46,14 @@ def cases(data, which):
             d = os.path.join(data, 'deform', name)
             rest, init = os.path.join(d, name + '_rest.node'), os.path.join(d, name + '_init.node')
             handles = os.path.join(d, name + '_handles.txt')
-            common = ['--handles', handles]
+            common = ['--handles', handles, '--distortion', 'isometric']
             out.append(dict(name='deform/' + name, dim=3,
                             args=['--rest', rest, '--targets', init] + common,
-                            check=['--rest', rest, '--targets', init] + common))
+                            check=['--rest', rest, '--targets', init, '--handles', handles]))
             if name == 'untwist':
                 out.append(dict(name='untwist-twisted', dim=3,
                                 args=['--rest', rest, '--init', init] + common,
-                                check=['--rest', rest, '--targets', init] + common))
+                                check=['--rest', rest, '--targets', init, '--handles', handles]))
     return out
 
 
@@ -110,6 +110,79 @@ def fmt(x, digits=3):
     return str(x)
 
 
+VARIANTS = {
+    'default': ([], 'the default run: --mode auto, full quality'),
+    'full': (['--mode', 'full'], 'the full solve (--mode full), where it ends within the time limit'),
+    'until-valid': (['--until-valid'], 'untangling only (--until-valid): stops at the first verified map'),
+}
+
+
+def run_case(a, case, variant, work):
+    out = os.path.join(work, '%s.%s%s' % (case['name'].replace('/', '_'), variant,
+                                          '.node' if case['dim'] == 3 else '.obj'))
+    report = out + '.json'
+    command = ([a.sa, 'map'] + case['args'] + VARIANTS[variant][0] +
+               ['--out', out, '--report', report, '--force', '--quiet'] + a.extra)
+    print('running %s (%s) ...' % (case['name'], variant), file=sys.stderr, flush=True)
+    r = run_measured(command, a.timeout)
+    row = dict(case=case['name'])
+    if r is None:
+        row['status'] = 'killed after %g s' % a.timeout
+        return row
+    row['wall'], row['peak'] = r['wall'], r['peak_kb'] / 1024.0 / 1024.0
+    if not os.path.exists(report):
+        row['status'] = 'sa exit %d: %s' % (r['code'], (r['err'].strip().splitlines() or [''])[-1])
+        return row
+    rep = json.load(open(report))
+    row['elements'] = rep['input']['simplices']
+    row['before'] = rep['initial_quality']['inverted']
+    row['mode'] = rep.get('mode', 'full')
+    stage = rep.get('vertex_stage', {}).get('iterations', 0)
+    t = rep['times']
+    if row['mode'] == 'submesh':
+        m = rep['submesh']
+        row['iterations'] = '%d in %d solves + %d' % (m['iterations'], m['solves'], stage)
+        row['submesh'] = '%d rounds, %d solves, largest %d, %d rings' % (
+            len(m['rounds']), m['solves'], m['largest_submesh'], m['max_rings'])
+        row['stages'] = 'start %.2f, regions %.2f, vertex %.2f' % (
+            m['times']['start'], m['times']['solves'], t['vertex_stage'])
+    else:
+        row['iterations'] = '%d + %d' % (len(rep['iterations']) - 1, stage)
+        row['submesh'] = '-'
+        row['stages'] = 'assembly %.2f, recovery %.2f, vertex %.2f' % (
+            t['optimization'], t['recovery'], t['vertex_stage'])
+    tol = 1e-6 * diagonal_of_targets(case['check'])
+    c = subprocess.run([sys.executable, a.checker] + case['check'] + ['--result', out, '--tol', repr(tol)],
+                       capture_output=True, text=True)
+    try:
+        chk = json.loads(c.stdout)
+    except json.JSONDecodeError:
+        chk = dict(ok=False, error=c.stdout + c.stderr)
+    row['check'] = chk
+    row['status'] = 'verified' if chk.get('ok') else 'NOT verified'
+    if chk.get('ok') != rep['verification']['success']:
+        row['status'] += ' (sa and the checker disagree!)'
+    print('  ', row['status'], fmt(row['wall']), 's', file=sys.stderr, flush=True)
+    return row
+
+
+def table(rows):
+    header = ('| case | elements | inverted before | inverted after | handle error | '
+              'δ_con max / avg | δ_iso max / avg | mode | submeshes | iterations | stage times (s) | '
+              'wall time (s) | peak memory (GB) | check_map.py |\n'
+              '|---|---:|---:|---:|---:|---:|---:|:---:|---|---:|---|---:|---:|:---|\n')
+    lines = []
+    for r in rows:
+        chk = r.get('check', {})
+        con, iso = chk.get('conformal', [None, None]), chk.get('isometric', [None, None])
+        lines.append('| %s | %s | %s | %s | %s | %s / %s | %s / %s | %s | %s | %s | %s | %s | %s | %s |' % (
+            r['case'], fmt(r.get('elements')), fmt(r.get('before')), fmt(chk.get('inverted')),
+            fmt(chk.get('handle_max_err')), fmt(con[0], 4), fmt(con[1], 4), fmt(iso[0], 4), fmt(iso[1], 4),
+            r.get('mode', '-'), r.get('submesh', '-'), r.get('iterations', '-'), r.get('stages', '-'),
+            fmt(r.get('wall'), 3), fmt(r.get('peak'), 2), r['status']))
+    return header + '\n'.join(lines) + '\n'
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     ap.add_argument('--sa', default=os.path.join(ROOT, 'build', 'bin', 'sa'))
@@ -117,76 +190,27 @@ def main():
     ap.add_argument('--checker', default=os.path.join(ROOT, '..', 'shared', 'tools', 'check_map.py'))
     ap.add_argument('--cases', default='tlc,deform', help='comma-separated: tlc, deform')
     ap.add_argument('--only', help='run only the cases whose name contains this text')
-    ap.add_argument('--timeout', type=float, default=600.0, help='seconds per case')
-    ap.add_argument('--write', help='markdown file whose map-benchmarks section gets the table')
+    ap.add_argument('--variants', default='default,full,until-valid',
+                    help='comma-separated: ' + ', '.join(VARIANTS))
+    ap.add_argument('--timeout', type=float, default=600.0, help='seconds per run')
+    ap.add_argument('--write', help='markdown file whose map-benchmarks section gets the tables')
     ap.add_argument('extra', nargs='*', help='arguments for every sa map run (after --)')
     a = ap.parse_args()
 
-    rows = []
     work = tempfile.mkdtemp(prefix='sa-map-bench-')
-    for case in cases(a.data, a.cases.split(',')):
-        if a.only and a.only not in case['name']:
-            continue
-        out = os.path.join(work, case['name'].replace('/', '_') + ('.node' if case['dim'] == 3 else '.obj'))
-        report = out + '.json'
-        command = [a.sa, 'map'] + case['args'] + ['--out', out, '--report', report, '--force', '--quiet'] + a.extra
-        print('running', case['name'], '...', file=sys.stderr, flush=True)
-        r = run_measured(command, a.timeout)
-        row = dict(case=case['name'])
-        if r is None:
-            row['status'] = 'killed after %g s' % a.timeout
-            rows.append(row)
-            continue
-        row['wall'], row['peak'] = r['wall'], r['peak_kb'] / 1024.0 / 1024.0
-        if not os.path.exists(report):
-            row['status'] = 'sa exit %d: %s' % (r['code'], (r['err'].strip().splitlines() or [''])[-1])
-            rows.append(row)
-            continue
-        rep = json.load(open(report))
-        row['elements'] = rep['input']['simplices']
-        row['before'] = rep['initial_quality']['inverted']
-        stage = rep.get('vertex_stage', {}).get('iterations', 0)
-        row['iterations'] = '%d + %d' % (len(rep['iterations']) - 1, stage) if rep.get('mode') != 'submesh' \
-            else '%d (%d solves)' % (rep['submesh']['iterations'], rep['submesh']['solves'])
-        row['mode'] = rep.get('mode', 'full')
-        row['assembled'] = rep['assembly']['assembled']
-        row['sa_success'] = rep['verification']['success']
-        tol = 1e-6 * diagonal_of_targets(case['check'])
-        c = subprocess.run([sys.executable, a.checker] + case['check'] + ['--result', out, '--tol', repr(tol)],
-                           capture_output=True, text=True)
-        try:
-            chk = json.loads(c.stdout)
-        except json.JSONDecodeError:
-            chk = dict(ok=False, error=c.stdout + c.stderr)
-        row['check'] = chk
-        row['status'] = 'verified' if chk.get('ok') else 'NOT verified'
-        if chk.get('ok') != rep['verification']['success']:
-            row['status'] += ' (sa and the checker disagree!)'
-        rows.append(row)
-        print('  ', row['status'], fmt(row['wall']), 's', file=sys.stderr, flush=True)
-
-    header = ('| case | elements | inverted before | inverted after | handle error | '
-              'δ_con max / avg | δ_iso max / avg | mode | iterations | assembled | wall time (s) | '
-              'peak memory (GB) | check_map.py |\n'
-              '|---|---:|---:|---:|---:|---:|---:|:---:|---:|:---:|---:|---:|:---|\n')
-    lines = []
-    for r in rows:
-        chk = r.get('check', {})
-        con, iso = chk.get('conformal', [None, None]), chk.get('isometric', [None, None])
-        lines.append('| %s | %s | %s | %s | %s | %s / %s | %s / %s | %s | %s | %s | %s | %s | %s |' % (
-            r['case'], fmt(r.get('elements')), fmt(r.get('before')), fmt(chk.get('inverted')),
-            fmt(chk.get('handle_max_err')), fmt(con[0], 4), fmt(con[1], 4), fmt(iso[0], 4), fmt(iso[1], 4),
-            r.get('mode', '-'), fmt(r.get('iterations')), {True: 'yes', False: 'no'}.get(r.get('assembled'), '-'),
-            fmt(r.get('wall'), 3), fmt(r.get('peak'), 2), r['status']))
-    table = header + '\n'.join(lines) + '\n'
-    print(table)
+    output = ''
+    for variant in a.variants.split(','):
+        rows = [run_case(a, case, variant, work) for case in cases(a.data, a.cases.split(','))
+                if not a.only or a.only in case['name']]
+        output += '**%s**: %s\n\n%s\n' % (variant, VARIANTS[variant][1], table(rows))
+    print(output)
 
     if a.write:
         command = 'python3 bench/map_benchmarks.py ' + ' '.join(sys.argv[1:])
         section = ('<!-- map-benchmarks:begin -->\n'
-                   'Measured %s on %s (%s), with\n\n```\n%s\n```\n\n%s'
+                   'Measured %s on %s, with\n\n```\n%s\n```\n\n%s'
                    '<!-- map-benchmarks:end -->' % (datetime.date.today().isoformat(), platform.node(),
-                                                  platform.processor() or platform.machine(), command, table))
+                                                  command, output))
         text = open(a.write).read() if os.path.exists(a.write) else ''
         begin, end = '<!-- map-benchmarks:begin -->', '<!-- map-benchmarks:end -->'
         if begin in text and end in text:

@@ -99,6 +99,9 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
         "--no-vertex-stage", a.no_vertex_stage,
         "keep the paper's schedule to its own termination at lambda_max instead of finishing in "
         "vertex variables once assembled");
+    map->add_flag(
+        "--until-valid", a.until_valid,
+        "stop at the first map verified inversion-free (untangling only: no distortion stage)");
     map->add_flag("--force", a.force, "overwrite existing output files");
     map->add_flag("--quiet", a.quiet, "no progress rows on stderr");
     return map;
@@ -128,6 +131,7 @@ int run_map_command(const MapArguments& a) {
     options.s = a.s;
     options.lambda_max = a.lambda_max;
     options.vertex_stage = !a.no_vertex_stage;
+    options.until_valid = a.until_valid;
     options.mode = parse_solve_mode(a.mode);
     options.linear_solver = parse_linear_solver(a.linear_solver);
     options.rings = a.rings;

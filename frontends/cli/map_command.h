@@ -19,7 +19,7 @@ struct MapArguments {
     double mu = 1000.0, s = 1.0, lambda_max = 1e16;
     int max_iterations = 200, threads = 0;
     std::uint64_t seed = 1;
-    bool force = false, quiet = false, no_vertex_stage = false;
+    bool force = false, quiet = false, no_vertex_stage = false, until_valid = false;
 };
 
 /// Adds the subcommand to `app`; `arguments` is filled when it is parsed.

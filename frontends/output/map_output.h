@@ -3,7 +3,8 @@
 //
 // write_map_result() chooses the format by extension. .vtu and .vtk carry, for ParaView:
 //   cell data   det_J (det A_i of the output), conformal, isometric, volumetric (the paper's
-//               delta metrics; -1 where undefined: inverted or degenerate simplices), inverted (0/1)
+//               delta metrics; -1 where undefined: inverted or degenerate simplices), inverted
+//               (0/1)
 //   point data  displacement (output - rest, when the map has the rest's dimension),
 //               change (output - initial map), handle (0/1)
 // Other extensions: write_mesh_file() (.obj, .off, .mesh, .node/.ele, or result records with

@@ -112,14 +112,16 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
                       std::max(row.line_search_trials, 0), row.time);
         log_line(observer.logger, line);
         if (observer.snapshot) observer.snapshot(row.iteration, corners_of(c.problem.variables()));
-        if (options.vertex_stage) {
+        if (options.vertex_stage || options.until_valid) {
             // Hand over as soon as the mesh recovered from the current A_i is inversion-free and
             // within the bound: one right-hand side and triangular solves of Eq. 6.
             Stopwatch check;
             Eigen::MatrixXd positions = prepared.recovery->recover(
                 assembly.linear_parts(c.problem.variables()), prepared.pinned);
             const double recovered_energy = mesh_energy<D>(prepared, positions);
-            const bool ok = recovered_energy <= options.handover_ratio * row.barrier;
+            const bool ok = options.until_valid
+                                ? std::isfinite(recovered_energy)
+                                : recovered_energy <= options.handover_ratio * row.barrier;
             result.times.recovery += check.seconds();
             if (ok) {
                 handover = std::move(positions);
@@ -149,7 +151,7 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
                                                          prepared.pinned);
     result.times.recovery += stage.lap();
 
-    if (options.vertex_stage) {
+    if (options.vertex_stage && !options.until_valid) {
         // The anchored simplices keep all their vertices: a free part has no rigid motion left.
         std::vector<unsigned char> fixed = prepared.recovery->fixed();
         for (Index s : in.anchored_simplices) {

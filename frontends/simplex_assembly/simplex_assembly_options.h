@@ -81,6 +81,10 @@ struct SimplexAssemblyOptions {
     /// disassembled simplices: a valid but far more distorted mesh would leave the vertex stage
     /// with the slow start the paper avoids by disassembling.
     double handover_ratio = 1.5;
+    /// Stop at the first map verified inversion-free and within the bound: the assembly stops at
+    /// the first iteration whose recovered mesh is valid (whatever its energy), and no vertex
+    /// stage lowers the distortion afterwards. Untangling only; the fastest path.
+    bool until_valid = false;
 
     // Termination: E~_assembly below assembly_tolerance and the relative change of E within a
     // step below energy_tolerance, or limits (each stage has max_iterations).

@@ -230,7 +230,7 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
     result.assembled = bad.empty();
     // The repaired mesh is valid: finish with the vertex stage on the whole mesh, which lowers the
     // distortion everywhere (its system has D unknowns per vertex) and never leaves the valid set.
-    if (options.vertex_stage && bad.empty()) {
+    if (options.vertex_stage && !options.until_valid && bad.empty()) {
         Stopwatch vertex_watch;
         std::vector<unsigned char> fixed(p.mesh.num_vertices(), 0);
         for (Index h : input.handles) fixed[h] = 1;

@@ -1,0 +1,81 @@
+#include <gtest/gtest.h>
+
+#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "geometry/mesh_generators.h"
+#include "geometry/mesh_topology.h"
+
+namespace sa {
+namespace {
+
+// A grid with its boundary as handles and a few interior vertices pushed across their
+// neighbours: separate, local folds, as after moving a few handles.
+MappingProblem local_folds(const SimplicialMesh& mesh, const std::vector<Index>& pushed,
+                           double amount) {
+    MappingProblem p;
+    p.mesh = mesh;
+    p.initial = mesh.vertices;
+    const MeshTopology t = mesh_topology(mesh, "grid");
+    for (Index v = 0; v < mesh.num_vertices(); ++v) {
+        if (t.boundary_vertex[v]) p.handles.push_back(v);
+    }
+    for (Index v : pushed) p.initial(v, 0) += amount;
+    return p;
+}
+
+SimplexAssemblyOptions submesh_options(int threads) {
+    SimplexAssemblyOptions options;
+    options.mode = SolveMode::kSubmesh;
+    options.num_threads = threads;
+    options.rings = 2;
+    options.start_iterations = 0;  // start from the folds themselves, so that regions are solved
+    return options;
+}
+
+TEST(SubmeshMode, RepairsSeparateFoldsIn2DAndIsVerified) {
+    const int n = 40;  // vertex (i, j) = j * 41 + i
+    const MappingProblem p =
+        local_folds(grid_triangles(n, n), {10 * 41 + 10, 30 * 41 + 25, 12 * 41 + 33}, 0.06);
+    const SimplexAssemblyResult r = run_simplex_assembly(p, submesh_options(0));
+    EXPECT_GT(r.initial_quality.inverted, 0);
+    EXPECT_EQ(r.mode, SolveMode::kSubmesh);
+    EXPECT_TRUE(r.success) << r.message;
+    EXPECT_EQ(r.verification.inverted, 0);
+    ASSERT_FALSE(r.submesh.rounds.empty());
+    EXPECT_EQ(r.submesh.rounds[0].regions, 3) << r.submesh.describe();  // three separate folds
+    EXPECT_LT(r.submesh.largest_submesh, p.mesh.num_simplices() / 4);   // local, not the mesh
+}
+
+TEST(SubmeshMode, RepairsA3DFold) {
+    const int n = 8;  // vertex (i, j, k) = (k * 9 + j) * 9 + i
+    const MappingProblem p = local_folds(grid_tetrahedra(n, n, n), {(4 * 9 + 4) * 9 + 4}, 0.2);
+    const SimplexAssemblyResult r = run_simplex_assembly(p, submesh_options(0));
+    EXPECT_GT(r.initial_quality.inverted, 0);
+    EXPECT_TRUE(r.success) << r.message;
+    EXPECT_EQ(r.mode, SolveMode::kSubmesh);
+}
+
+TEST(SubmeshMode, SameOutputOnOneAndTwoThreads) {
+    const int n = 40;
+    const MappingProblem p =
+        local_folds(grid_triangles(n, n), {10 * 41 + 10, 30 * 41 + 25, 12 * 41 + 33}, 0.06);
+    const SimplexAssemblyResult a = run_simplex_assembly(p, submesh_options(1));
+    const SimplexAssemblyResult b = run_simplex_assembly(p, submesh_options(2));
+    ASSERT_TRUE(a.success && b.success) << a.message << " / " << b.message;
+    ASSERT_EQ(a.positions.size(), b.positions.size());
+    EXPECT_EQ(
+        std::memcmp(a.positions.data(), b.positions.data(), sizeof(double) * a.positions.size()),
+        0);
+    EXPECT_EQ(a.submesh.solves, b.submesh.solves);
+}
+
+TEST(SubmeshMode, AutoPicksFullForSmallMeshesAndSubmeshesForLargeOnes) {
+    const MappingProblem small = local_folds(grid_triangles(10, 10), {5 * 11 + 5}, 0.15);
+    EXPECT_EQ(run_simplex_assembly(small, SimplexAssemblyOptions{}).mode, SolveMode::kFull);
+    SimplexAssemblyOptions options;
+    options.auto_full_triangles = 1000;  // the 40 x 40 grid (3200 triangles) counts as large
+    const MappingProblem large = local_folds(grid_triangles(40, 40), {10 * 41 + 10}, 0.06);
+    EXPECT_EQ(run_simplex_assembly(large, options).mode, SolveMode::kSubmesh);
+}
+
+}  // namespace
+}  // namespace sa
