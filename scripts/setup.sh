@@ -13,6 +13,7 @@ packages=(
     libvtk9-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     libcli11-dev nlohmann-json3-dev
+    libcairo2-dev
     xvfb xauth
 )
 

@@ -1,12 +1,15 @@
 // The `sa` command: inversion-free mappings by Simplex Assembly.
 //   sa map  ...   a mesh, an initial map and handles -> a verified inversion-free map
 //   sa demo ...   the paper's Figure 1 in miniature
+//   sa param ...  a planar parameterization of a disk-topology surface
+//   sa subdivide  Loop subdivision (to build large test meshes)
 // Exit status: 0 verified success, 1 a result that did not pass verification, 2 bad input.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
 #include "frontends/cli/demo_command.h"
 #include "frontends/cli/map_command.h"
+#include "frontends/cli/param_command.h"
 #include "optim/errors.h"
 
 int main(int argc, char** argv) {
@@ -17,6 +20,10 @@ int main(int argc, char** argv) {
     sa::cli::DemoArguments demo_arguments;
     CLI::App* map = sa::cli::add_map_command(app, map_arguments);
     CLI::App* demo = sa::cli::add_demo_command(app, demo_arguments);
+    sa::cli::ParamArguments param_arguments;
+    CLI::App* param = sa::cli::add_param_command(app, param_arguments);
+    sa::cli::SubdivideArguments subdivide_arguments;
+    CLI::App* subdivide = sa::cli::add_subdivide_command(app, subdivide_arguments);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -26,6 +33,8 @@ int main(int argc, char** argv) {
     try {
         if (map->parsed()) return sa::cli::run_map_command(map_arguments);
         if (demo->parsed()) return sa::cli::run_demo_command(demo_arguments);
+        if (param->parsed()) return sa::cli::run_param_command(param_arguments);
+        if (subdivide->parsed()) return sa::cli::run_subdivide_command(subdivide_arguments);
     } catch (const sa::Error& e) {
         std::cerr << "sa: error: " << e.what() << '\n';
         return 2;

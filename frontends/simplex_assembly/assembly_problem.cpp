@@ -4,6 +4,7 @@
 #include <set>
 
 #include "energies/affine_point_energies.h"
+#include "energies/boundary_angle_energy.h"
 #include "energies/edge_assembly_energy.h"
 #include "energies/simplex_energy.h"
 #include "energies/vertex_copy_energies.h"
@@ -49,6 +50,9 @@ AssemblyProblem<D>::AssemblyProblem(const AssemblyInput<D>& in,
                                               : std::vector<Mat<D>>{});
     translation_offset_.assign(n, -1);
     if (variant_ == Variant::kVertex) {
+        if (!in.fans.empty()) {
+            throw InvalidArgumentError("the boundary-angle barrier needs the r-SA or f-SA variant");
+        }
         build_vertex(in);
         std::vector<Mat<D>> rest_inverse = in.frames->edge_inverse;
         std::vector<std::array<Index, D*(D + 1)>> elements(n);
@@ -67,6 +71,9 @@ AssemblyProblem<D>::AssemblyProblem(const AssemblyInput<D>& in,
     std::vector<std::array<Index, D * D>> elements(n);
     for (Index s = 0; s < n; ++s) elements[s] = consecutive<D * D>(a_offset(s));
     simplex_term_ = problem_->add_term("simplex energy", simplex_energy, std::move(elements));
+    if constexpr (D == 2) {
+        add_boundary_angle_terms(in);
+    }
     problem_->add_variable_block("linear parts", 0, a_offset(n));
     if (!translation_simplices_.empty()) {
         const BlockId b =
@@ -78,6 +85,48 @@ AssemblyProblem<D>::AssemblyProblem(const AssemblyInput<D>& in,
         if (translation_offset_[s] >= 0) {
             for (int k = 0; k < D; ++k) problem_->set_fixed(translation_offset_[s] + k);
         }
+    }
+}
+
+template <int D>
+void AssemblyProblem<D>::add_boundary_angle_terms(const AssemblyInput<D>& in) {
+    if constexpr (D == 2) {
+        for (const BoundaryFan& fan : in.fans) {
+            if (fan.triangles.size() > std::size_t(kMaxFan)) {
+                throw InvalidArgumentError("boundary vertex " + std::to_string(fan.vertex) +
+                                           " has " + std::to_string(fan.triangles.size()) +
+                                           " triangles; the boundary-angle "
+                                           "barrier (--free-boundary-injective) handles at most " +
+                                           std::to_string(kMaxFan));
+            }
+        }
+        // One term per fan size K: E_theta on the linear parts of the fan's triangles.
+        [&]<int... k>(std::integer_sequence<int, k...>) {
+            (
+                [&] {
+                    constexpr int K = k + 1;
+                    BoundaryAngleEnergy<K> energy;
+                    std::vector<std::array<Index, 4 * K>> elements;
+                    for (const BoundaryFan& fan : in.fans) {
+                        if (int(fan.triangles.size()) != K) continue;
+                        std::array<Mat<2>, K> edges;
+                        std::array<Index, 4 * K> element;
+                        for (int t = 0; t < K; ++t) {
+                            edges[t] = fan_edges(*in.mesh, *in.frames, fan, t);
+                            for (int c = 0; c < 4; ++c)
+                                element[4 * t + c] = a_offset(fan.triangles[t]) + c;
+                        }
+                        energy.edges.push_back(edges);
+                        elements.push_back(element);
+                    }
+                    if (!elements.empty()) {
+                        problem_->add_term("boundary angle " + std::to_string(K), std::move(energy),
+                                           std::move(elements));
+                    }
+                }(),
+                ...);
+        }
+        (std::make_integer_sequence<int, kMaxFan>{});
     }
 }
 

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "frontends/simplex_assembly/simplex_assembly_options.h"
+#include "geometry/boundary_fans.h"
 #include "geometry/mesh_topology.h"
 #include "geometry/rest_frames.h"
 #include "geometry/steiner_tree.h"
@@ -39,6 +40,8 @@ struct AssemblyInput {
     std::vector<Index> handles;
     std::vector<Vec<D>> targets;            ///< one per handle
     std::vector<Index> anchored_simplices;  ///< fixed simplices
+    /// Boundary fans for E_theta (section 5.1); empty: no such term. Triangles only.
+    std::vector<BoundaryFan> fans;
 };
 
 template <int D>
@@ -68,6 +71,7 @@ class AssemblyProblem {
     void build_reduced(const AssemblyInput<D>& in);
     void build_full(const AssemblyInput<D>& in);
     void build_vertex(const AssemblyInput<D>& in);
+    void add_boundary_angle_terms(const AssemblyInput<D>& in);
     Index a_offset(Index s) const { return Index(D * D) * s; }
 
     Variant variant_;

@@ -15,6 +15,53 @@ namespace sa {
 
 namespace {
 
+/// Makes every boundary angle sum of the disassembled triangles smaller than 2 pi, as section 5.1
+/// says: a triangle's angle at a boundary vertex is narrowed by a stretch along its bisector
+/// (determinant > 0, so no triangle is inverted). Similarities keep the rest angles, whose sum
+/// exceeds 2 pi at saddle-shaped boundary vertices of a surface.
+void open_boundary_angles(const SimplicialMesh& mesh, const std::vector<BoundaryFan>& fans,
+                          const RestFrames<2>& frames, std::vector<Mat<2>>& A,
+                          const std::string& source) {
+    auto angle = [](const Mat<2>& A, const Mat<2>& E) {
+        const Eigen::Vector2d a = A * E.col(0), b = A * E.col(1);
+        return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+    };
+    const double target = 0.95 * 2.0 * M_PI;
+    for (int pass = 0; pass < 10; ++pass) {
+        bool changed = false;
+        for (const BoundaryFan& fan : fans) {
+            double theta = 0.0;
+            for (std::size_t k = 0; k < fan.triangles.size(); ++k) {
+                theta += angle(A[fan.triangles[k]], fan_edges(mesh, frames, fan, k));
+            }
+            if (theta < target) continue;
+            changed = true;
+            const double ratio = target / theta;
+            for (std::size_t k = 0; k < fan.triangles.size(); ++k) {
+                Mat<2>& a = A[fan.triangles[k]];
+                const Mat<2> E = fan_edges(mesh, frames, fan, k);
+                const double alpha = angle(a, E);
+                // Stretch across the bisector: tan(alpha' / 2) = f tan(alpha / 2).
+                const Eigen::Vector2d d =
+                    ((a * E.col(0)).normalized() + (a * E.col(1)).normalized()).normalized();
+                const Eigen::Vector2d n(-d.y(), d.x());
+                const double f = std::tan(0.5 * ratio * alpha) / std::tan(0.5 * alpha);
+                a = (d * d.transpose() + f * n * n.transpose()) * a;
+            }
+        }
+        if (!changed) return;
+    }
+    for (const BoundaryFan& fan : fans) {
+        double theta = 0.0;
+        for (std::size_t k = 0; k < fan.triangles.size(); ++k)
+            theta += angle(A[fan.triangles[k]], fan_edges(mesh, frames, fan, k));
+        if (!(theta < 2.0 * M_PI)) {
+            throw InputError(source + ": cannot start with the angle sum at boundary vertex " +
+                             std::to_string(fan.vertex) + " below 2 pi");
+        }
+    }
+}
+
 void check_input(const MappingProblem& p, int d) {
     const std::string& src = p.source;
     if (p.initial.rows() != p.mesh.num_vertices()) {
@@ -36,6 +83,11 @@ void check_input(const MappingProblem& p, int d) {
         }
         if (!seen.insert(h).second)
             throw InputError(src + ": handle vertex " + std::to_string(h) + " is listed twice");
+    }
+    if (p.reference.size() > 0 &&
+        (p.reference.rows() != p.mesh.num_vertices() || p.reference.cols() < d)) {
+        throw InputError(src + ": the reference map has " + std::to_string(p.reference.rows()) +
+                         " rows for " + std::to_string(p.mesh.num_vertices()) + " vertices");
     }
     if (p.targets.size() > 0 &&
         (p.targets.rows() != Index(p.handles.size()) || p.targets.cols() < d)) {
@@ -89,9 +141,13 @@ std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
     in.mesh = &p->mesh;
     in.topology = &p->topology;
     in.frames = &p->frames;
-    in.reference_linear = linear_parts<D>(p->mesh, p->frames, p->start);
-    p->initial_quality = map_quality<D>(in.reference_linear, p->frames.volume);
-    in.start_linear = in.reference_linear;
+    in.start_linear = linear_parts<D>(p->mesh, p->frames, p->start);
+    p->initial_quality = map_quality<D>(in.start_linear, p->frames.volume);
+    in.reference_linear =
+        input.reference.size() > 0
+            ? linear_parts<D>(p->mesh, p->frames,
+                              (input.reference.leftCols(D).rowwise() - p->map_center) * p->scale)
+            : in.start_linear;
     project_linear_parts<D>(in.start_linear, options.effective_initialization(), options.seed);
     in.start_translation.resize(n);
     for (Index s = 0; s < n; ++s) {
@@ -131,6 +187,15 @@ std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
     for (Index c = 0; c < components; ++c) {
         if (anchor[c] >= 0) in.anchored_simplices.push_back(anchor[c]);
     }
+    if (input.boundary_injective) {
+        if constexpr (D != 2) {
+            throw InvalidArgumentError(
+                input.source + ": the boundary-angle barrier is for triangles mapped to the plane");
+        } else {
+            in.fans = boundary_fans(original, p->topology);
+            open_boundary_angles(original, in.fans, p->frames, in.start_linear, input.source);
+        }
+    }
     p->energy = std::make_unique<SimplexEnergy<D>>(
         simplex_energy_options(options), p->frames.volume,
         options.mapping_distortion == DistortionType::kDifference ? in.reference_linear
@@ -157,15 +222,20 @@ std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
 template <int D>
 double mesh_energy(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions) {
     const std::vector<Mat<D>> A = linear_parts<D>(p.mesh, p.frames, positions);
-    return tbb::parallel_deterministic_reduce(
-        tbb::blocked_range<Index>(0, p.mesh.num_simplices(), 1024), 0.0,
-        [&](const tbb::blocked_range<Index>& r, double sum) {
-            for (Index s = r.begin(); s != r.end() && sum < kInfinity; ++s) {
-                sum += p.energy->value(s, Eigen::Map<const Vec<D * D>>(A[s].data()));
-            }
-            return sum;
-        },
-        std::plus<double>());
+    double boundary = 0.0;
+    for (double theta : boundary_angle_sums(p.assembly.fans, positions)) {
+        boundary += theta < 2.0 * M_PI ? 1.0 / (2.0 * M_PI - theta) : kInfinity;
+    }
+    return boundary + tbb::parallel_deterministic_reduce(
+                          tbb::blocked_range<Index>(0, p.mesh.num_simplices(), 1024), 0.0,
+                          [&](const tbb::blocked_range<Index>& r, double sum) {
+                              for (Index s = r.begin(); s != r.end() && sum < kInfinity; ++s) {
+                                  sum +=
+                                      p.energy->value(s, Eigen::Map<const Vec<D * D>>(A[s].data()));
+                              }
+                              return sum;
+                          },
+                          std::plus<double>());
 }
 
 template <int D>

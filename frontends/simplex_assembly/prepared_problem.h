@@ -46,8 +46,9 @@ std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
                                                     const SimplexAssemblyOptions& options,
                                                     StageTimes& times);
 
-/// The energy sum_i mu w_i d_m(A_i) + E_C(A_i) of the map `positions` (normalized): +inf unless
-/// every simplex is positively oriented (against its rest orientation) and under the bound.
+/// The energy sum_i mu w_i d_m(A_i) + E_C(A_i) (+ E_theta of the boundary fans, when asked) of the
+/// map `positions` (normalized): +inf unless every simplex is positively oriented (against its
+/// rest orientation), under the bound, and every boundary angle sum below 2 pi.
 template <int D>
 double mesh_energy(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions);
 

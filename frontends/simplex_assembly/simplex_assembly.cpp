@@ -158,7 +158,7 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
             for (int k = 0; k <= D; ++k) fixed[mesh.simplices(s, k)] = 1;
         }
         VertexStage vertex = run_vertex_stage<D>(mesh, frames, *prepared.energy, recovered, fixed,
-                                                 options, observer.logger);
+                                                 options, observer.logger, in.fans);
         result.vertex_stage_ran = vertex.ran;
         result.vertex_stage_note = vertex.note;
         result.vertex_stage = vertex.newton;
@@ -187,6 +187,13 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
     }
     Stopwatch stage;
     verify_result<D>(input, options, result);
+    if (!prepared->assembly.fans.empty()) {
+        result.boundary_violations_before =
+            count_boundary_violations(prepared->assembly.fans, prepared->initial_map);
+        result.boundary_violations_after =
+            count_boundary_violations(prepared->assembly.fans, result.positions);
+        if (result.boundary_violations_after > 0) result.success = false;
+    }
     std::ostringstream message;
     message << (result.success ? "success: " : "FAILED: ") << result.verification.describe()
             << ". ";

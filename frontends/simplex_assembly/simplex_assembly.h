@@ -31,11 +31,16 @@
 namespace sa {
 
 struct MappingProblem {
-    SimplicialMesh mesh;           ///< the rest shape
-    Eigen::MatrixXd initial;       ///< #V x d initial map (d = simplex dimension)
-    std::vector<Index> handles;    ///< vertices with prescribed positions
-    Eigen::MatrixXd targets;       ///< #handles x d; empty: the handles' rows of `initial`
+    SimplicialMesh mesh;         ///< the rest shape
+    Eigen::MatrixXd initial;     ///< #V x d initial map (d = simplex dimension)
+    std::vector<Index> handles;  ///< vertices with prescribed positions
+    Eigen::MatrixXd targets;     ///< #handles x d; empty: the handles' rows of `initial`
+    /// #V x d map whose linear parts are the A0 of E_m = difference; empty: `initial`.
+    Eigen::MatrixXd reference;
     std::string source = "input";  ///< names the input in error messages
+    /// Triangles mapped to the plane only: add the boundary-angle barrier E_theta (section 5.1)
+    /// so that the boundary stays locally injective (angle sums below 2 pi); full mode only.
+    bool boundary_injective = false;
 };
 
 /// One iteration of the assembly, as the paper's Figure 4 plots it.
@@ -125,6 +130,10 @@ struct SimplexAssemblyResult {
     Index num_translation_simplices = 0;  ///< |Omega_s| for r-SA, N for f-SA
     Index num_tree_edges = 0;
     Index num_anchored_simplices = 0;
+    /// With boundary_injective: boundary vertices whose angle sum is >= 2 pi, before and after
+    /// (-1 when not measured).
+    Index boundary_violations_before = -1;
+    Index boundary_violations_after = -1;
 };
 
 struct SimplexAssemblyObserver {

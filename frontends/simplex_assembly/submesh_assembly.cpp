@@ -67,6 +67,13 @@ SimplexAssemblyResult solve_region(const MappingProblem& input, const MeshTopolo
 
 template <int D>
 SolveMode choose_mode(const PreparedProblem<D>& p, const SimplexAssemblyOptions& options) {
+    if (p.input->boundary_injective) {
+        if (options.mode == SolveMode::kSubmesh) {
+            throw InvalidArgumentError(
+                "the boundary-angle barrier runs in the full mode only (--mode full or auto)");
+        }
+        return SolveMode::kFull;
+    }
     if (options.mode != SolveMode::kAuto) return options.mode;
     const Index n = p.mesh.num_simplices();
     if (n <= (D == 2 ? options.auto_full_triangles : options.auto_full_tetrahedra))

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "energies/boundary_angle_energy.h"
 #include "energies/vertex_copy_energies.h"
 #include "optim/newton_solver.h"
 #include "optim/problem.h"
@@ -12,7 +13,8 @@ template <int D>
 VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& frames,
                              const SimplexEnergy<D>& energy, const Eigen::MatrixXd& start,
                              const std::vector<unsigned char>& fixed,
-                             const SimplexAssemblyOptions& options, const Logger& logger) {
+                             const SimplexAssemblyOptions& options, const Logger& logger,
+                             const std::vector<BoundaryFan>& fans) {
     VertexStage result;
     result.positions = start;
     const Index nv = mesh.num_vertices();
@@ -39,6 +41,33 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
     problem.add_term("simplex energy",
                      VertexSimplexEnergy<D>(energy.subset(moving), std::move(rest_inverse)),
                      std::move(elements));
+    if constexpr (D == 2) {
+        // E_theta on the positions of each boundary vertex and its fan neighbours.
+        [&]<int... k>(std::integer_sequence<int, k...>) {
+            (
+                [&] {
+                    constexpr int K = k + 1;
+                    std::vector<std::array<Index, 2 * K + 4>> angle_elements;
+                    for (const BoundaryFan& fan : fans) {
+                        if (int(fan.triangles.size()) != K) continue;
+                        std::array<Index, 2 * K + 4> e;
+                        e[0] = 2 * fan.vertex;
+                        e[1] = 2 * fan.vertex + 1;
+                        for (int m = 0; m <= K; ++m) {
+                            e[2 + 2 * m] = 2 * fan.neighbours[m];
+                            e[3 + 2 * m] = 2 * fan.neighbours[m] + 1;
+                        }
+                        angle_elements.push_back(e);
+                    }
+                    if (!angle_elements.empty()) {
+                        problem.add_term("boundary angle " + std::to_string(K),
+                                         BoundaryAngleVertexEnergy<K>{}, std::move(angle_elements));
+                    }
+                }(),
+                ...);
+        }
+        (std::make_integer_sequence<int, kMaxFan>{});
+    }
     for (Index v = 0; v < nv; ++v) {
         if (!fixed[v]) continue;
         for (int c = 0; c < D; ++c) problem.set_fixed(D * v + c);
@@ -77,10 +106,12 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
 template VertexStage run_vertex_stage<2>(const SimplicialMesh&, const RestFrames<2>&,
                                          const SimplexEnergy<2>&, const Eigen::MatrixXd&,
                                          const std::vector<unsigned char>&,
-                                         const SimplexAssemblyOptions&, const Logger&);
+                                         const SimplexAssemblyOptions&, const Logger&,
+                                         const std::vector<BoundaryFan>&);
 template VertexStage run_vertex_stage<3>(const SimplicialMesh&, const RestFrames<3>&,
                                          const SimplexEnergy<3>&, const Eigen::MatrixXd&,
                                          const std::vector<unsigned char>&,
-                                         const SimplexAssemblyOptions&, const Logger&);
+                                         const SimplexAssemblyOptions&, const Logger&,
+                                         const std::vector<BoundaryFan>&);
 
 }  // namespace sa

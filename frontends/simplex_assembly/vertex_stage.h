@@ -13,6 +13,7 @@
 
 #include "energies/simplex_energy.h"
 #include "frontends/simplex_assembly/simplex_assembly_options.h"
+#include "geometry/boundary_fans.h"
 #include "geometry/rest_frames.h"
 #include "optim/logger.h"
 #include "optim/newton_summary.h"
@@ -26,11 +27,13 @@ struct VertexStage {
     NewtonSummary newton;
 };
 
-/// `start` #V x D in the driver's normalized coordinates; `fixed` flags handles and anchors.
+/// `start` #V x D in the driver's normalized coordinates; `fixed` flags handles and anchors;
+/// `fans` (triangles only) adds the boundary-angle barrier E_theta.
 template <int D>
 VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& frames,
                              const SimplexEnergy<D>& energy, const Eigen::MatrixXd& start,
                              const std::vector<unsigned char>& fixed,
-                             const SimplexAssemblyOptions& options, const Logger& logger);
+                             const SimplexAssemblyOptions& options, const Logger& logger,
+                             const std::vector<BoundaryFan>& fans = {});
 
 }  // namespace sa

@@ -1,0 +1,283 @@
+#include "frontends/cli/param_command.h"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "frontends/cli/cli_support.h"
+#include "frontends/cli/map_command.h"
+#include "frontends/output/layout_picture.h"
+#include "frontends/output/map_output.h"
+#include "frontends/output/map_report.h"
+#include "frontends/param/parameterization.h"
+#include "geometry/io/mesh_file.h"
+#include "geometry/io/obj_io.h"
+#include "geometry/io/vtk_io.h"
+#include "geometry/subdivision.h"
+#include "optim/errors.h"
+#include "optim/stopwatch.h"
+
+namespace sa::cli {
+
+namespace {
+
+std::string extension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    return ext;
+}
+
+double peak_memory_gb() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss / 1024.0 / 1024.0;
+}
+
+const std::vector<std::string> kInitialMaps = {"lscm", "tutte", "tutte-uniform", "harmonic"};
+
+}  // namespace
+
+CLI::App* add_param_command(CLI::App& app, ParamArguments& a) {
+    CLI::App* param = app.add_subcommand(
+        "param", "Planar parameterization of a disk-topology surface (Simplex Assembly)");
+    param
+        ->add_option("--mesh", a.mesh,
+                     "the surface: .obj .off .ply .stl .vtk .vtu .mesh (a disk: one boundary loop)")
+        ->required();
+    param
+        ->add_option(
+            "--init", a.init,
+            "initial map: lscm (free boundary), tutte (mean-value weights, circle), tutte-uniform, "
+            "harmonic (cotangent, circle), or a file (an OBJ's vt, or positions)")
+        ->capture_default_str();
+    param->add_option("--distortion", a.distortion, "conformal or isometric")
+        ->capture_default_str();
+    param->add_option("--bound", a.bound, "bound K on that distortion, a number > 1 or inf")
+        ->capture_default_str();
+    param->add_flag(
+        "--optimal-bound", a.optimal_bound,
+        "rounds that take the largest distortion as the next bound until it stops improving (5.1)");
+    param->add_option("--optimal-bound-rounds", a.optimal_bound_rounds,
+                      "most rounds of --optimal-bound (default 10)");
+    param
+        ->add_option("--energy", a.energy,
+                     "E_m: difference (area-weighted |A - A0|^2 to the initial map), lscm, or none")
+        ->capture_default_str();
+    param->add_option("--mu", a.mu, "weight of E_m")->capture_default_str();
+    param->add_flag(
+        "--free-boundary-injective", a.free_boundary_injective,
+        "keep every boundary angle sum below 2 pi (the barrier E_theta of 5.1; full mode)");
+    param->add_option("--mode", a.mode, "auto, full or submesh")->capture_default_str();
+    param->add_option("--threads", a.threads, "worker threads, 0 = all cores")
+        ->capture_default_str();
+    param->add_option("--max-iterations", a.max_iterations, "Newton iterations at most, per stage")
+        ->capture_default_str();
+    param
+        ->add_option("--out", a.out,
+                     "the surface with its map: .obj (vt per vertex) or .vtu/.vtk (point data uv)")
+        ->required();
+    param->add_option("--layout", a.layout, "the UV layout as .vtu/.vtk, with per-face distortion");
+    param->add_option("--png", a.png,
+                      "a picture of the UV layout coloured by conformal distortion");
+    param->add_option("--report", a.report, "JSON report");
+    param->add_flag("--force", a.force, "overwrite existing output files");
+    param->add_flag("--quiet", a.quiet, "no progress rows on stderr");
+    return param;
+}
+
+int run_param_command(const ParamArguments& a) {
+    Stopwatch total;
+    ParameterizationOptions options;
+    SimplexAssemblyOptions& solver = options.solver;
+    solver.distortion = parse_distortion(a.distortion);
+    if (solver.distortion != DistortionType::kConformal &&
+        solver.distortion != DistortionType::kIsometric) {
+        throw InvalidArgumentError("--distortion " + a.distortion +
+                                   ": a parameterization takes conformal or isometric");
+    }
+    solver.bound = parse_bound(a.bound);
+    if (a.energy == "difference" || a.energy == "diff") {
+        solver.mapping_distortion = DistortionType::kDifference;
+    } else if (a.energy == "lscm") {
+        solver.mapping_distortion = DistortionType::kLscm;
+    } else if (a.energy != "none") {
+        throw InvalidArgumentError("--energy " + a.energy + ": expected difference, lscm or none");
+    }
+    solver.mu = a.mu;
+    solver.mode = parse_solve_mode(a.mode);
+    solver.num_threads = a.threads;
+    solver.max_iterations = a.max_iterations;
+    solver.validate();
+    if (a.optimal_bound)
+        options.optimal_bound_rounds = a.optimal_bound_rounds > 0 ? a.optimal_bound_rounds : 10;
+    options.free_boundary_injective = a.free_boundary_injective;
+    const std::string out_ext = extension(a.out);
+    if (out_ext != ".obj" && out_ext != ".vtu" && out_ext != ".vtk") {
+        throw InvalidArgumentError(a.out +
+                                   ": the parameterized surface is written as .obj, .vtu or .vtk");
+    }
+    if (!a.layout.empty() && extension(a.layout) != ".vtu" && extension(a.layout) != ".vtk") {
+        throw InvalidArgumentError(a.layout + ": the layout is written as .vtu or .vtk");
+    }
+    for (const std::string* path : {&a.out, &a.layout, &a.png, &a.report}) {
+        if (!path->empty()) check_writable(*path, a.force);
+    }
+
+    Stopwatch stage;
+    MeshFile file = read_mesh_file(a.mesh);
+    for (const std::string& warning : file.warnings)
+        std::cerr << "sa: warning: " << warning << '\n';
+    const SimplicialMesh& mesh = file.mesh;
+    if (mesh.simplex_dimension() != 2)
+        throw InputError(a.mesh + ": a parameterization needs a triangle mesh");
+    const double read_time = stage.lap();
+    Eigen::MatrixXd given;
+    const bool named =
+        std::find(kInitialMaps.begin(), kInitialMaps.end(), a.init) != kInitialMaps.end();
+    if (!named) {
+        if (extension(a.init) == ".obj") {
+            const MeshFile init = read_mesh_file(a.init);
+            if (!init.initial)
+                throw InputError(a.init + ": no per-vertex texture coordinates (vt) to start from");
+            given = *init.initial;
+        } else {
+            given = read_positions(a.init, mesh.num_vertices(), 2);
+        }
+        if (given.rows() != mesh.num_vertices()) {
+            throw InputError(a.init + ": " + std::to_string(given.rows()) + " positions for " +
+                             std::to_string(mesh.num_vertices()) + " vertices");
+        }
+    }
+    SimplexAssemblyObserver observer;
+    observer.logger = stderr_logger(a.quiet);
+    std::cout << "sa param: " << mesh.num_simplices() << " triangles, " << mesh.num_vertices()
+              << " vertices (" << a.mesh << "), initial map " << a.init << "\n";
+    const ParameterizationResult r =
+        parameterize(mesh, a.mesh, named ? nullptr : &given,
+                     named ? parse_initial_map(a.init) : InitialMap::kLscm, options, observer);
+    const double solve_time = stage.lap();
+
+    // Outputs: the surface with its map, the layout, the picture, the report.
+    const MapQuality& q = r.solve.final_quality;
+    const std::vector<DataArray> cells = quality_cell_data(q);
+    if (out_ext == ".obj") {
+        write_obj(a.out, mesh.vertices, mesh.simplices, &r.uv);
+    } else {
+        Eigen::MatrixXd uv3 = Eigen::MatrixXd::Zero(r.uv.rows(), 3);
+        uv3.leftCols(2) = r.uv;
+        const std::vector<DataArray> points = {{"uv", uv3}};
+        out_ext == ".vtu" ? write_vtu(a.out, mesh.vertices, mesh.simplices, points, cells)
+                          : write_vtk(a.out, mesh.vertices, mesh.simplices, points, cells);
+    }
+    if (!a.layout.empty()) {
+        extension(a.layout) == ".vtu" ? write_vtu(a.layout, r.uv, mesh.simplices, {}, cells)
+                                      : write_vtk(a.layout, r.uv, mesh.simplices, {}, cells);
+    }
+    if (!a.png.empty()) {
+        Eigen::VectorXd values(mesh.num_simplices());
+        std::vector<unsigned char> inverted(mesh.num_simplices());
+        for (Index f = 0; f < mesh.num_simplices(); ++f) {
+            values[f] = q.per_simplex[f].conformal;
+            inverted[f] = q.per_simplex[f].inverted || q.per_simplex[f].degenerate;
+        }
+        LayoutPicture picture;
+        char title[256];
+        std::snprintf(title, sizeof title,
+                      "%s: %ld faces, %ld foldovers; conformal distortion max %.3g, mean %.4g",
+                      std::filesystem::path(a.mesh).filename().c_str(), long(mesh.num_simplices()),
+                      long(q.inverted), q.conformal.max, q.conformal.mean);
+        picture.title = title;
+        picture.value_name = "conformal distortion (sigma max / sigma min)";
+        picture.low = 1.0;
+        picture.high = std::max(1.1, std::min(q.conformal.max, 10.0));
+        write_layout_png(a.png, r.uv, mesh.simplices, values, picture, inverted);
+    }
+    const double output_time = stage.lap();
+    if (!a.report.empty()) {
+        MappingProblem problem;
+        problem.mesh = mesh;
+        problem.initial = r.initial_uv;
+        problem.source = a.mesh;
+        nlohmann::json report = map_report(problem, solver, r.solve);
+        nlohmann::json rounds = nlohmann::json::array();
+        for (const BoundRound& b : r.rounds) {
+            rounds.push_back({{"bound", std::isfinite(b.bound) ? nlohmann::json(b.bound)
+                                                               : nlohmann::json(nullptr)},
+                              {"max_distortion", b.max_distortion},
+                              {"success", b.success},
+                              {"iterations", b.iterations},
+                              {"time", b.time}});
+        }
+        report["parameterization"] = {
+            {"initial_map", a.init},
+            {"initial_quality", quality_json(r.initial_quality)},
+            {"bound_rounds", rounds},
+            {"reached_bound", std::isfinite(r.reached_bound) ? nlohmann::json(r.reached_bound)
+                                                             : nlohmann::json(nullptr)},
+            {"boundary_violations_before", r.boundary_violations_before},
+            {"boundary_violations_after", r.boundary_violations_after},
+            {"success", r.success},
+            {"message", r.message},
+            {"times",
+             {{"read", read_time},
+              {"initial_map", r.initial_map_time},
+              {"solve", solve_time - r.initial_map_time},
+              {"output", output_time},
+              {"total", total.seconds()}}},
+            {"peak_memory_gb", peak_memory_gb()}};
+        write_json(a.report, report);
+    }
+    char line[512];
+    std::snprintf(
+        line, sizeof line,
+        "  initial map (%s, %.2f s): %ld foldovers, conformal max %.4g mean %.4g\n"
+        "  result: %ld foldovers, conformal max %.4g mean %.4g; isometric max %.4g mean %.4g\n",
+        a.init.c_str(), r.initial_map_time, long(r.initial_quality.inverted),
+        r.initial_quality.conformal.max, r.initial_quality.conformal.mean, long(q.inverted),
+        q.conformal.max, q.conformal.mean, q.isometric.max, q.isometric.mean);
+    std::cout << line;
+    if (options.optimal_bound_rounds > 0) {
+        std::cout << "  optimal bound: " << r.rounds.size() << " rounds, K reached "
+                  << r.reached_bound << "\n";
+    }
+    std::snprintf(line, sizeof line,
+                  "  time %.2f s (read %.2f, initial map %.2f, Simplex Assembly %.2f, output "
+                  "%.2f); peak memory %.2f GB\n",
+                  total.seconds(), read_time, r.initial_map_time, solve_time - r.initial_map_time,
+                  output_time, peak_memory_gb());
+    std::cout << line << "  " << r.message << "\n  wrote " << a.out
+              << (a.layout.empty() ? "" : ", " + a.layout) << (a.png.empty() ? "" : ", " + a.png)
+              << (a.report.empty() ? "" : ", " + a.report) << "\n";
+    return r.success ? 0 : 1;
+}
+
+CLI::App* add_subdivide_command(CLI::App& app, SubdivideArguments& a) {
+    CLI::App* sub =
+        app.add_subcommand("subdivide", "Loop subdivision of a triangle mesh (OpenMesh)");
+    sub->add_option("--mesh", a.mesh, "triangle mesh")->required();
+    sub->add_option("--levels", a.levels, "each level multiplies the triangles by 4")
+        ->check(CLI::Range(0, 8))
+        ->capture_default_str();
+    sub->add_option("--out", a.out, "output mesh (.obj .off .vtu .vtk .mesh)")->required();
+    sub->add_flag("--force", a.force, "overwrite an existing output");
+    return sub;
+}
+
+int run_subdivide_command(const SubdivideArguments& a) {
+    check_writable(a.out, a.force);
+    check_output_format(a.out, 2);
+    const MeshFile file = read_mesh_file(a.mesh);
+    validate_mesh(file.mesh, a.mesh);
+    const SimplicialMesh out = loop_subdivide(file.mesh, a.levels);
+    write_mesh_file(a.out, out.vertices, out.simplices);
+    std::cout << "sa subdivide: " << file.mesh.num_simplices() << " -> " << out.num_simplices()
+              << " triangles, " << out.num_vertices() << " vertices; wrote " << a.out << "\n";
+    return 0;
+}
+
+}  // namespace sa::cli

@@ -1,0 +1,134 @@
+#include "frontends/param/parameterization.h"
+
+#include <sstream>
+
+#include "geometry/boundary_fans.h"
+#include "geometry/boundary_loops.h"
+#include "geometry/initial_maps.h"
+#include "optim/errors.h"
+#include "optim/stopwatch.h"
+
+namespace sa {
+
+std::string to_string(InitialMap map) {
+    switch (map) {
+        case InitialMap::kLscm:
+            return "lscm";
+        case InitialMap::kTutte:
+            return "tutte";
+        case InitialMap::kTutteUniform:
+            return "tutte-uniform";
+        case InitialMap::kHarmonic:
+            return "harmonic";
+    }
+    return "unknown";
+}
+
+InitialMap parse_initial_map(const std::string& name) {
+    for (InitialMap m : {InitialMap::kLscm, InitialMap::kTutte, InitialMap::kTutteUniform,
+                         InitialMap::kHarmonic}) {
+        if (to_string(m) == name) return m;
+    }
+    throw InvalidArgumentError("unknown initial map '" + name +
+                               "' (expected lscm, tutte, tutte-uniform or harmonic)");
+}
+
+ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::string& source,
+                                    const Eigen::MatrixXd* initial_uv, InitialMap initial,
+                                    const ParameterizationOptions& options,
+                                    const SimplexAssemblyObserver& observer) {
+    Stopwatch total, stage;
+    ParameterizationResult result;
+    validate_mesh(mesh, source);
+    const MeshTopology topology = mesh_topology(mesh, source);
+    require_disk(mesh, topology, source);
+    if (initial_uv != nullptr) {
+        if (initial_uv->rows() != mesh.num_vertices() || initial_uv->cols() < 2) {
+            throw InputError(source + ": the initial map has " +
+                             std::to_string(initial_uv->rows()) + " rows for " +
+                             std::to_string(mesh.num_vertices()) + " vertices");
+        }
+        result.initial_uv = initial_uv->leftCols(2);
+    } else {
+        switch (initial) {
+            case InitialMap::kLscm:
+                result.initial_uv = lscm(mesh, topology);
+                break;
+            case InitialMap::kTutte:
+                result.initial_uv = tutte_embedding(mesh, topology, TutteWeights::kMeanValue);
+                break;
+            case InitialMap::kTutteUniform:
+                result.initial_uv = tutte_embedding(mesh, topology, TutteWeights::kUniform);
+                break;
+            case InitialMap::kHarmonic:
+                result.initial_uv = harmonic_circle(mesh, topology);
+                break;
+        }
+    }
+    result.initial_map_time = stage.lap();
+    const std::vector<BoundaryFan> fans = boundary_fans(mesh, topology);
+    result.boundary_violations_before = count_boundary_violations(fans, result.initial_uv);
+
+    MappingProblem problem;
+    problem.mesh = mesh;
+    problem.source = source;
+    problem.initial = result.initial_uv;
+    problem.reference =
+        result.initial_uv;  // E_m measures the change from the initial map in every round
+    problem.boundary_injective = options.free_boundary_injective;
+    SimplexAssemblyOptions solver = options.solver;
+    const int rounds = std::max(1, options.optimal_bound_rounds);
+    bool have_result = false;
+    for (int round = 0; round < rounds; ++round) {
+        Stopwatch round_watch;
+        if (round > 0) {
+            // The previous result starts the next round, its largest distortion is the new bound.
+            const double previous = result.reached_bound;
+            solver.bound = previous;
+            problem.initial = result.uv;
+            log_line(observer.logger, "optimal bound: round " + std::to_string(round) +
+                                          ", K = " + std::to_string(previous));
+        }
+        SimplexAssemblyResult r = run_simplex_assembly(problem, solver, observer);
+        if (round == 0) result.initial_quality = r.initial_quality;
+        BoundRound record;
+        record.bound = solver.bound;
+        record.max_distortion = r.verification.max_distortion;
+        record.success = r.success && r.verification.within_bound();
+        record.iterations = r.newton.num_steps() + r.vertex_stage.num_steps();
+        record.time = round_watch.seconds();
+        result.rounds.push_back(record);
+        if (!record.success) {
+            if (!have_result) result.solve = std::move(r);
+            break;  // keep the last verified round
+        }
+        const bool improved =
+            !have_result || r.verification.max_distortion <
+                                result.reached_bound * (1.0 - options.optimal_bound_tolerance);
+        result.uv = r.positions;
+        result.reached_bound = r.verification.max_distortion;
+        result.solve = std::move(r);
+        have_result = true;
+        if (!improved) break;
+    }
+    result.success = have_result;
+    if (!have_result) result.uv = result.solve.positions;
+    result.boundary_violations_after = count_boundary_violations(fans, result.uv);
+    if (options.free_boundary_injective && result.boundary_violations_after > 0)
+        result.success = false;
+    std::ostringstream message;
+    message << (result.success ? "success: " : "FAILED: ") << result.solve.verification.describe()
+            << "; " << result.boundary_violations_after
+            << " boundary vertices with an angle sum >= 2 pi (" << result.boundary_violations_before
+            << " in the initial map)";
+    if (options.optimal_bound_rounds > 0) {
+        message << "; optimal bound: " << result.rounds.size() << " rounds, reached "
+                << result.reached_bound;
+    }
+    message << ".";
+    result.message = message.str();
+    result.total_time = total.seconds();
+    return result;
+}
+
+}  // namespace sa

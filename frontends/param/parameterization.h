@@ -1,0 +1,64 @@
+#pragma once
+// Planar parameterization of a disk-topology surface by Simplex Assembly (sections 5.1 and 5.2):
+// an initial map (LSCM, Tutte, harmonic, or one given), then Simplex Assembly with a free boundary
+// (no handles) and E_m = sum_i area_i |A_i - A_i^0|^2 (difference to the initial map) or the LSCM
+// energy, under a bound K on the conformal or isometric distortion, or the optimal bound: rounds
+// that each take the largest distortion of the previous result as the new bound, until it stops
+// improving (section 5.1, "Optimal bound"). With `free_boundary_injective` the boundary-angle
+// barrier E_theta keeps every boundary angle sum below 2 pi.
+
+#include <string>
+#include <vector>
+
+#include "frontends/simplex_assembly/simplex_assembly.h"
+
+namespace sa {
+
+enum class InitialMap { kLscm, kTutte, kTutteUniform, kHarmonic };
+std::string to_string(InitialMap map);
+/// "lscm", "tutte" (mean-value weights), "tutte-uniform", "harmonic"; throws otherwise.
+InitialMap parse_initial_map(const std::string& name);
+
+struct ParameterizationOptions {
+    /// The distortion in the barrier (conformal or isometric), E_m and mu; bound, threads, mode.
+    /// The driver sets no handles and takes E_m as configured here.
+    SimplexAssemblyOptions solver;
+    /// Rounds of the optimal bound: 0 keeps solver.bound; n > 0 runs up to n rounds.
+    int optimal_bound_rounds = 0;
+    /// The optimal bound stops when a round lowers the largest distortion by less than this share.
+    double optimal_bound_tolerance = 1e-3;
+    /// The boundary-angle barrier E_theta (full mode only).
+    bool free_boundary_injective = false;
+};
+
+struct BoundRound {
+    double bound = kInfinity;     ///< K for this round
+    double max_distortion = 0.0;  ///< of its result
+    bool success = false;
+    int iterations = 0;
+    double time = 0.0;
+};
+
+struct ParameterizationResult {
+    Eigen::MatrixXd uv;          ///< #V x 2 (the last verified round)
+    Eigen::MatrixXd initial_uv;  ///< #V x 2
+    MapQuality initial_quality;
+    SimplexAssemblyResult solve;  ///< the last verified round (or the first, if none was)
+    std::vector<BoundRound> rounds;
+    double reached_bound = kInfinity;  ///< the largest distortion of `uv`, in the barrier's measure
+    Index boundary_violations_before = 0;  ///< boundary vertices with angle sum >= 2 pi
+    Index boundary_violations_after = 0;
+    double initial_map_time = 0.0;
+    double total_time = 0.0;
+    bool success = false;
+    std::string message;
+};
+
+/// `mesh` is the rest surface (#V x 3 or #V x 2, triangles); `initial_uv`, when not null, is the
+/// initial map (#V x 2) and `initial` is ignored. Throws InputError when the mesh is not a disk.
+ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::string& source,
+                                    const Eigen::MatrixXd* initial_uv, InitialMap initial,
+                                    const ParameterizationOptions& options,
+                                    const SimplexAssemblyObserver& observer = {});
+
+}  // namespace sa

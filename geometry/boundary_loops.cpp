@@ -1,0 +1,82 @@
+#include "geometry/boundary_loops.h"
+
+#include <algorithm>
+#include <map>
+
+#include "optim/errors.h"
+
+namespace sa {
+
+std::vector<std::vector<Index>> boundary_loops(const SimplicialMesh& mesh,
+                                               const MeshTopology& topology) {
+    // next[a] = b for every boundary edge a -> b in its triangle's order.
+    std::map<Index, Index> next;
+    for (const BoundaryFacet& f : topology.boundary_facets) {
+        const Index a = f.vertices[0], b = f.vertices[1];
+        Index from = a, to = b;
+        for (int k = 0; k < 3; ++k) {
+            if (mesh.simplices(f.simplex, k) == b && mesh.simplices(f.simplex, (k + 1) % 3) == a) {
+                from = b;
+                to = a;
+            }
+        }
+        next[from] = to;
+    }
+    std::vector<std::vector<Index>> loops;
+    std::map<Index, bool> done;
+    for (const auto& [start, unused] : next) {
+        (void)unused;
+        if (done[start]) continue;
+        std::vector<Index> loop;
+        Index v = start;
+        while (!done[v]) {
+            done[v] = true;
+            loop.push_back(v);
+            const auto it = next.find(v);
+            if (it == next.end()) break;
+            v = it->second;
+        }
+        loops.push_back(std::move(loop));
+    }
+    return loops;
+}
+
+void require_disk(const SimplicialMesh& mesh, const MeshTopology& topology,
+                  const std::string& source) {
+    if (mesh.simplex_dimension() != 2)
+        throw InputError(source + ": a parameterization needs a triangle mesh");
+    for (Index v = 0; v < mesh.num_vertices(); ++v) {
+        if (!topology.used_vertex[v]) {
+            throw InputError(source + ": vertex " + std::to_string(v) + " belongs to no triangle");
+        }
+    }
+    // A boundary vertex with two outgoing boundary edges makes the boundary non-manifold.
+    std::vector<int> out_degree(mesh.num_vertices(), 0);
+    for (const BoundaryFacet& f : topology.boundary_facets) {
+        for (int k = 0; k < 2; ++k) {
+            if (++out_degree[f.vertices[k]] > 2) {
+                throw InputError(source + ": the mesh is not manifold at boundary vertex " +
+                                 std::to_string(f.vertices[k]) +
+                                 " (more than two boundary edges meet there)");
+            }
+        }
+    }
+    const std::vector<std::vector<Index>> loops = boundary_loops(mesh, topology);
+    if (loops.empty()) {
+        throw InputError(source +
+                         ": the mesh is closed (no boundary); a planar parameterization needs a "
+                         "disk: cut it open first");
+    }
+    if (loops.size() > 1) {
+        throw InputError(source + ": the mesh has " + std::to_string(loops.size()) +
+                         " boundary loops; a planar parameterization needs one (a disk)");
+    }
+    const long chi =
+        long(mesh.num_vertices()) - long(topology.edges.size()) + long(mesh.num_simplices());
+    if (chi != 1) {
+        throw InputError(source + ": Euler characteristic " + std::to_string(chi) +
+                         " (a disk has 1): the surface has handles");
+    }
+}
+
+}  // namespace sa

@@ -1,0 +1,127 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "frontends/param/parameterization.h"
+#include "geometry/boundary_fans.h"
+#include "geometry/mesh_generators.h"
+#include "geometry/mesh_topology.h"
+#include "optim/errors.h"
+
+namespace sa {
+namespace {
+
+// A piece of helicoid around its axis: the vertex on the axis is a boundary vertex whose 12 rest
+// triangles turn by 2.8 pi around it; with a small pitch their angles there sum to about 2.4 pi.
+// A conformal map keeps those angles, so without the boundary barrier the layout overlaps itself
+// there (a fold of the boundary, no inverted triangle).
+SimplicialMesh helicoid(int steps, int rings) {
+    const double turn = 2.8 * M_PI, pitch = 0.02;
+    SimplicialMesh mesh;
+    mesh.vertices.resize(1 + (steps + 1) * rings, 3);
+    mesh.vertices.row(0) << 0.0, 0.0, 0.0;
+    auto index = [&](int ring, int k) { return 1 + (ring - 1) * (steps + 1) + k; };
+    for (int ring = 1; ring <= rings; ++ring) {
+        for (int k = 0; k <= steps; ++k) {
+            const double phi = turn * k / steps, r = double(ring) / rings;
+            mesh.vertices.row(index(ring, k)) << r * std::cos(phi), r * std::sin(phi), pitch * phi;
+        }
+    }
+    std::vector<Eigen::Vector3i> faces;
+    for (int k = 0; k < steps; ++k) faces.emplace_back(0, index(1, k), index(1, k + 1));
+    for (int ring = 1; ring < rings; ++ring) {
+        for (int k = 0; k < steps; ++k) {
+            faces.emplace_back(index(ring, k), index(ring + 1, k), index(ring + 1, k + 1));
+            faces.emplace_back(index(ring, k), index(ring + 1, k + 1), index(ring, k + 1));
+        }
+    }
+    mesh.simplices.resize(faces.size(), 3);
+    for (std::size_t f = 0; f < faces.size(); ++f) mesh.simplices.row(f) = faces[f].transpose();
+    return mesh;
+}
+
+ParameterizationOptions conformal_options() {
+    ParameterizationOptions options;
+    options.solver.mapping_distortion = DistortionType::kDifference;
+    return options;
+}
+
+TEST(Parameterization, BoundaryBarrierKeepsBoundaryAngleSumsBelow2Pi) {
+    const SimplicialMesh mesh = helicoid(12, 6);
+    ParameterizationOptions plain = conformal_options();
+    const ParameterizationResult folded =
+        parameterize(mesh, "helicoid", nullptr, InitialMap::kLscm, plain);
+    EXPECT_EQ(folded.solve.verification.inverted, 0) << folded.message;
+    EXPECT_GE(folded.boundary_violations_after, 1)
+        << "the case should fold at its boundary without the barrier";
+
+    ParameterizationOptions injective = conformal_options();
+    injective.free_boundary_injective = true;
+    const ParameterizationResult r =
+        parameterize(mesh, "helicoid", nullptr, InitialMap::kLscm, injective);
+    EXPECT_TRUE(r.success) << r.message;
+    EXPECT_EQ(r.solve.verification.inverted, 0);
+    EXPECT_EQ(r.boundary_violations_after, 0) << r.message;
+    const MeshTopology t = mesh_topology(mesh, "helicoid");
+    for (double theta : boundary_angle_sums(boundary_fans(mesh, t), r.uv))
+        EXPECT_LT(theta, 2.0 * M_PI);
+}
+
+TEST(Parameterization, FullAndSubmeshModesBothVerifyABoundedMap) {
+    // A bumpy disk whose LSCM map exceeds a tight conformal bound in places.
+    SimplicialMesh mesh = grid_triangles(50, 50);
+    Eigen::MatrixXd lifted(mesh.num_vertices(), 3);
+    for (Index v = 0; v < mesh.num_vertices(); ++v) {
+        const double x = mesh.vertices(v, 0), y = mesh.vertices(v, 1);
+        lifted.row(v) << x, y,
+            0.25 * std::exp(-30.0 * ((x - 0.4) * (x - 0.4) + (y - 0.6) * (y - 0.6)));
+    }
+    mesh.vertices = lifted;
+    for (SolveMode mode : {SolveMode::kFull, SolveMode::kSubmesh}) {
+        ParameterizationOptions options = conformal_options();
+        options.solver.bound = 1.02;
+        options.solver.mode = mode;
+        const ParameterizationResult r =
+            parameterize(mesh, "bump", nullptr, InitialMap::kLscm, options);
+        EXPECT_GT(r.initial_quality.conformal.max, 1.05)
+            << "LSCM should exceed the bound somewhere";
+        EXPECT_TRUE(r.success) << to_string(mode) << ": " << r.message;
+        EXPECT_TRUE(r.solve.verification.within_bound()) << r.solve.verification.describe();
+        EXPECT_EQ(r.solve.mode, mode);
+    }
+}
+
+TEST(Parameterization, OptimalBoundLowersTheLargestDistortion) {
+    const SimplicialMesh mesh = helicoid(12, 4);
+    ParameterizationOptions options = conformal_options();
+    options.free_boundary_injective = true;
+    options.optimal_bound_rounds = 4;
+    const ParameterizationResult r =
+        parameterize(mesh, "helicoid", nullptr, InitialMap::kLscm, options);
+    ASSERT_TRUE(r.success) << r.message;
+    ASSERT_GE(r.rounds.size(), 2u);
+    EXPECT_LT(r.rounds[1].max_distortion, r.rounds[0].max_distortion);
+    EXPECT_LE(r.reached_bound, r.rounds[0].max_distortion);
+}
+
+TEST(Parameterization, RejectsMeshesThatAreNotDisks) {
+    SimplicialMesh closed;
+    closed.vertices.resize(4, 3);
+    closed.vertices << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+    closed.simplices.resize(4, 3);
+    closed.simplices << 0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2;
+    EXPECT_THROW(parameterize(closed, "closed", nullptr, InitialMap::kLscm, conformal_options()),
+                 InputError);
+    SimplicialMesh fan;  // three triangles on one edge
+    fan.vertices.resize(5, 3);
+    fan.vertices << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1;
+    fan.simplices.resize(3, 3);
+    fan.simplices << 0, 1, 2, 1, 0, 3, 0, 1, 4;
+    EXPECT_THROW(parameterize(fan, "fan", nullptr, InitialMap::kLscm, conformal_options()),
+                 InputError);
+}
+
+}  // namespace
+}  // namespace sa
