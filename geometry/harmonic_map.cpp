@@ -65,7 +65,8 @@ Eigen::MatrixXd harmonic_map(const SimplicialMesh& mesh, const std::vector<Index
     if (nf == 0) return x;
     Eigen::SparseMatrix<double> lower(nf, nf);
     lower.setFromTriplets(entries.begin(), entries.end());
-    LinearSolver solver(LinearSolverType::kCholmodSupernodal);
+    LinearSolver solver(LinearSolverType::kCholmodSupernodal,
+                        FillOrdering::kAmd);  // one factorization
     solver.analyze(lower);
     if (solver.factorize(lower) != FactorizationStatus::kSuccess) {
         throw InvalidArgumentError(

@@ -171,7 +171,8 @@ Eigen::MatrixXd lscm(const SimplicialMesh& mesh, const MeshTopology& topology) {
     }
     Eigen::SparseMatrix<double> lower(2 * nf, 2 * nf);
     lower.setFromTriplets(entries.begin(), entries.end());
-    LinearSolver solver(LinearSolverType::kCholmodSupernodal);
+    LinearSolver solver(LinearSolverType::kCholmodSupernodal,
+                        FillOrdering::kAmd);  // one factorization
     solver.analyze(lower);
     if (solver.factorize(lower) != FactorizationStatus::kSuccess) {
         throw InvalidArgumentError("lscm: the system is singular (is the mesh connected?)");

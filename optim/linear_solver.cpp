@@ -44,11 +44,19 @@ using EigenLDLT = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>;
 void quiet(cholmod_common& common) {
     common.print = 0;
 }
+
+void set_ordering(cholmod_common& common, FillOrdering ordering) {
+    if (ordering == FillOrdering::kAmd) {
+        common.nmethods = 1;
+        common.method[0].ordering = CHOLMOD_AMD;
+    }
+}
 }  // namespace
 
 struct LinearSolver::Impl {
     LinearSolverType requested;
     LinearSolverType type;
+    FillOrdering ordering = FillOrdering::kBest;
     std::optional<CholmodSupernodal> supernodal;
     std::optional<CholmodSimplicial> simplicial;
     std::optional<EigenLDLT> ldlt;
@@ -63,9 +71,11 @@ struct LinearSolver::Impl {
         switch (t) {
             case LinearSolverType::kCholmodSupernodal:
                 quiet(supernodal.emplace().cholmod());
+                set_ordering(supernodal->cholmod(), ordering);
                 break;
             case LinearSolverType::kCholmodSimplicial:
                 quiet(simplicial.emplace().cholmod());
+                set_ordering(simplicial->cholmod(), ordering);
                 break;
             case LinearSolverType::kEigenLDLT:
                 ldlt.emplace();
@@ -107,8 +117,10 @@ struct LinearSolver::Impl {
     }
 };
 
-LinearSolver::LinearSolver(LinearSolverType type) : impl_(std::make_unique<Impl>()) {
+LinearSolver::LinearSolver(LinearSolverType type, FillOrdering ordering)
+    : impl_(std::make_unique<Impl>()) {
     impl_->requested = type;
+    impl_->ordering = ordering;
     impl_->make(type);
 }
 LinearSolver::~LinearSolver() = default;

@@ -214,7 +214,7 @@ std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
             (in.start_linear[s] * p->frames.corner(s, 0) + in.start_translation[s]).transpose();
         fixed[v] = 1;
     }
-    p->recovery = std::make_unique<VertexRecovery<D>>(p->mesh, p->frames, std::move(fixed));
+    p->recovery_fixed = std::move(fixed);
     times.setup += stage.lap();
     return p;
 }

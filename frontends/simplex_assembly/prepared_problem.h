@@ -31,13 +31,24 @@ struct PreparedProblem {
     /// The per-simplex energy mu w_i d_m(A_i) + E_C(A_i) of these options.
     std::unique_ptr<SimplexEnergy<D>> energy;
     /// Eq. 6 with the handles at their targets and the first vertex of every anchored simplex
-    /// at its image (`pinned`, normalized; the matrix is factored once).
+    /// at its image (`pinned`, normalized; `recovery_fixed` marks those vertices).
     Eigen::MatrixXd pinned;
-    std::unique_ptr<VertexRecovery<D>> recovery;
+    std::vector<unsigned char> recovery_fixed;
+
+    /// The Eq. 6 solver, factored on first use (a submesh solve whose start is valid never needs
+    /// it; on a million triangles the factorization takes seconds).
+    VertexRecovery<D>& recovery() {
+        if (!recovery_)
+            recovery_ = std::make_unique<VertexRecovery<D>>(mesh, frames, recovery_fixed);
+        return *recovery_;
+    }
 
     Eigen::MatrixXd to_original(const Eigen::MatrixXd& normalized) const {
         return (normalized / scale).rowwise() + map_center;
     }
+
+  private:
+    std::unique_ptr<VertexRecovery<D>> recovery_;
 };
 
 /// Checks, normalizes and disassembles `input` (throws InputError on bad input).

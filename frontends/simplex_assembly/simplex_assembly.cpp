@@ -116,7 +116,7 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
             // Hand over as soon as the mesh recovered from the current A_i is inversion-free and
             // within the bound: one right-hand side and triangular solves of Eq. 6.
             Stopwatch check;
-            Eigen::MatrixXd positions = prepared.recovery->recover(
+            Eigen::MatrixXd positions = prepared.recovery().recover(
                 assembly.linear_parts(c.problem.variables()), prepared.pinned);
             const double recovered_energy = mesh_energy<D>(prepared, positions);
             const bool ok = options.until_valid
@@ -147,13 +147,13 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
     // every part has a handle or an anchored simplex, whose start image is pinned).
     Eigen::MatrixXd recovered =
         handover.size() > 0 ? handover
-                            : prepared.recovery->recover(assembly.linear_parts(problem.variables()),
-                                                         prepared.pinned);
+                            : prepared.recovery().recover(
+                                  assembly.linear_parts(problem.variables()), prepared.pinned);
     result.times.recovery += stage.lap();
 
     if (options.vertex_stage && !options.until_valid) {
         // The anchored simplices keep all their vertices: a free part has no rigid motion left.
-        std::vector<unsigned char> fixed = prepared.recovery->fixed();
+        std::vector<unsigned char> fixed = prepared.recovery_fixed;
         for (Index s : in.anchored_simplices) {
             for (int k = 0; k <= D; ++k) fixed[mesh.simplices(s, k)] = 1;
         }

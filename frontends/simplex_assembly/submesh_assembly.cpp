@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "energies/distortion.h"
@@ -105,7 +106,7 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
     for (int iteration = 1; iteration <= options.start_iterations && !bad.empty(); ++iteration) {
         std::vector<Mat<D>> A = linear_parts<D>(p.mesh, p.frames, current);
         project_linear_parts<D>(A, options.effective_initialization(), options.seed);
-        current = p.recovery->recover(A, p.pinned);
+        current = p.recovery().recover(A, p.pinned);
         const Eigen::MatrixXd candidate = p.to_original(current);
         std::vector<Index> candidate_bad = bad_simplices<D>(p, candidate);
         if (candidate_bad.size() < bad.size()) {
@@ -118,6 +119,7 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
     stats.start_time = stage.lap();
     std::vector<unsigned char> is_handle(input.mesh.num_vertices(), 0);
     for (Index h : input.handles) is_handle[h] = 1;
+    std::vector<unsigned char> repaired(input.mesh.num_vertices(), 0);  // in a solved region
     char line[320];
     std::snprintf(line, sizeof line, "submesh mode: start from the %s, %ld bad simplices of %ld",
                   stats.start.c_str(), long(bad.size()), long(p.mesh.num_simplices()));
@@ -198,6 +200,7 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
                         r.success && (options.bound == kInfinity || r.verification.within_bound());
                     if (ok) {
                         ++record.solved;
+                        for (Index v : subs[i].vertices) repaired[v] = 1;
                         for (std::size_t v = 0; v < subs[i].vertices.size(); ++v) {
                             if (!subs[i].on_region_boundary[v] && !is_handle[subs[i].vertices[v]]) {
                                 positions.row(subs[i].vertices[v]) = r.positions.row(v);
@@ -235,12 +238,16 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
         stats.rounds.push_back(record);
     }
     result.assembled = bad.empty();
-    // The repaired mesh is valid: finish with the vertex stage on the whole mesh, which lowers the
-    // distortion everywhere (its system has D unknowns per vertex) and never leaves the valid set.
-    if (options.vertex_stage && !options.until_valid && bad.empty()) {
+    // The repaired mesh is valid: finish with the vertex stage on the repaired regions (their
+    // vertices, region boundaries included, move; the rest of the mesh stays as it was, as in
+    // section 4.4). It lowers the distortion there and never leaves the valid set.
+    const bool any_repaired = std::find(repaired.begin(), repaired.end(), 1) != repaired.end();
+    if (options.vertex_stage && !options.until_valid && bad.empty() && !any_repaired) {
+        result.vertex_stage_note = "skipped: no region was repaired";
+    } else if (options.vertex_stage && !options.until_valid && bad.empty()) {
         Stopwatch vertex_watch;
         std::vector<unsigned char> fixed(p.mesh.num_vertices(), 0);
-        for (Index h : input.handles) fixed[h] = 1;
+        for (Index v = 0; v < p.mesh.num_vertices(); ++v) fixed[v] = !repaired[v] || is_handle[v];
         for (Index s : p.assembly.anchored_simplices) {
             for (int k = 0; k <= D; ++k) fixed[p.mesh.simplices(s, k)] = 1;
         }
