@@ -18,16 +18,13 @@ With --write, the table replaces the section between the markers
 and the date. Extra arguments after -- go to every `sa map` run.
 """
 import argparse
-import datetime
 import json
 import os
-import platform
-import resource
-import signal
 import subprocess
 import sys
 import tempfile
-import time
+
+from bench_common import fmt, run_measured, write_section
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -57,26 +54,6 @@ def cases(data, which):
     return out
 
 
-def run_measured(command, timeout):
-    """Runs `command` in a child Python that reports the child's wall time and peak RSS."""
-    wrapper = ('import json,resource,subprocess,sys,time\n'
-               't=time.time()\n'
-               'p=subprocess.run(sys.argv[1:],stdout=subprocess.PIPE,stderr=subprocess.PIPE,text=True)\n'
-               'w=time.time()-t\n'
-               'm=resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss\n'
-               'print(json.dumps(dict(code=p.returncode,wall=w,peak_kb=m,out=p.stdout,err=p.stderr[-4000:])))\n')
-    # A session of its own, so that a timeout kills `sa` too, not only the wrapper.
-    p = subprocess.Popen([sys.executable, '-c', wrapper] + command, stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, text=True, start_new_session=True)
-    try:
-        out, _ = p.communicate(timeout=timeout)
-        return json.loads(out)
-    except subprocess.TimeoutExpired:
-        os.killpg(p.pid, signal.SIGKILL)
-        p.communicate()
-        return None
-
-
 def diagonal_of_targets(check_args):
     """Bounding-box diagonal of the handle targets' file, for the checker's absolute tolerance."""
     path = None
@@ -98,16 +75,6 @@ def diagonal_of_targets(check_args):
     lo = [min(r[i] for r in rows) for i in range(len(rows[0]))]
     hi = [max(r[i] for r in rows) for i in range(len(rows[0]))]
     return sum((b - a) ** 2 for a, b in zip(lo, hi)) ** 0.5
-
-
-def fmt(x, digits=3):
-    if x is None:
-        return '-'
-    if isinstance(x, float):
-        if x != x or x in (float('inf'), float('-inf')):
-            return 'inf'
-        return ('%.' + str(digits) + 'g') % x
-    return str(x)
 
 
 VARIANTS = {
@@ -206,21 +173,8 @@ def main():
     print(output)
 
     if a.write:
-        command = 'python3 bench/map_benchmarks.py ' + ' '.join(sys.argv[1:])
-        section = ('<!-- map-benchmarks:begin -->\n'
-                   'Measured %s on %s, with\n\n```\n%s\n```\n\n%s'
-                   '<!-- map-benchmarks:end -->' % (datetime.date.today().isoformat(), platform.node(),
-                                                  command, output))
-        text = open(a.write).read() if os.path.exists(a.write) else ''
-        begin, end = '<!-- map-benchmarks:begin -->', '<!-- map-benchmarks:end -->'
-        if begin in text and end in text:
-            text = text[:text.index(begin)] + section + text[text.index(end) + len(end):]
-        else:
-            text += '\n' + section + '\n'
-        tmp = a.write + '.tmp'
-        with open(tmp, 'w') as f:
-            f.write(text)
-        os.replace(tmp, a.write)
+        write_section(a.write, 'map-benchmarks', 'python3 bench/map_benchmarks.py ' + ' '.join(sys.argv[1:]),
+                      output)
     return 0
 
 

@@ -3,16 +3,13 @@
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
 
+#include "geometry/openmesh_traits.h"
 #include "optim/errors.h"
 
 namespace sa {
 
 namespace {
-struct DoubleTraits : OpenMesh::DefaultTraits {
-    using Point = OpenMesh::Vec3d;
-    using Normal = OpenMesh::Vec3d;
-};
-using TriMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
+using TriMesh = OpenMesh::TriMesh_ArrayKernelT<OpenMeshDoubleTraits>;
 }  // namespace
 
 SimplicialMesh loop_subdivide(const SimplicialMesh& mesh, int levels) {

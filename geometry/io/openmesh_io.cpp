@@ -13,18 +13,14 @@
 #include <vector>
 
 #include "geometry/io/text_reader.h"
+#include "geometry/openmesh_traits.h"
 #include "optim/errors.h"
 
 namespace sa {
 namespace {
 
-// Double-precision points: OpenMesh's default traits store floats.
-struct DoubleTraits : OpenMesh::DefaultTraits {
-    using Point = OpenMesh::Vec3d;
-    using Normal = OpenMesh::Vec3d;
-};
 // A polygon mesh, so that a non-triangular face is reported rather than triangulated.
-using Mesh = OpenMesh::PolyMesh_ArrayKernelT<DoubleTraits>;
+using Mesh = OpenMesh::PolyMesh_ArrayKernelT<OpenMeshDoubleTraits>;
 
 // OpenMesh's streams are global: one capture at a time.
 std::mutex& capture_mutex() {
