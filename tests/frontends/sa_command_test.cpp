@@ -1,6 +1,7 @@
 // Runs the `sa` executable as a user would: exit codes, messages, outputs.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -77,7 +78,7 @@ class SaCommand : public ::testing::Test {
 TEST_F(SaCommand, MapWritesAVerifiedResultAndAReport) {
     const std::string problem = folded_problem("grid.txt");
     const Outcome r = sa("map --rest " + problem + " --out " + path("out.obj") + " --report " +
-                     path("r.json") + " --record " + path("frames"));
+                         path("r.json") + " --record " + path("frames"));
     ASSERT_EQ(r.status, 0) << r.out << r.err;
     EXPECT_NE(
         r.out.find("success: verified from the output positions: 0 of 128 simplices inverted"),
@@ -114,7 +115,7 @@ TEST_F(SaCommand, BadInputGetsOneLineExitTwoAndNoOutput) {
 
     const std::string problem = folded_problem("grid.txt");
     const Outcome handles = sa("map --rest " + problem + " --handles " + path("missing.txt") +
-                           " --out " + path("out.vtu"));
+                               " --out " + path("out.vtu"));
     EXPECT_EQ(handles.status, 2);
     EXPECT_NE(handles.err.find("missing.txt"), std::string::npos) << handles.err;
     EXPECT_EQ(sa("map --rest " + problem + " --out " + path("out.vtu") + " --bound 0.9").status, 2);
@@ -144,6 +145,49 @@ TEST_F(SaCommand, DemoRepairsTheFoldedHarmonicMap) {
     for (const char* f : {"initial.vtu", "conformal_unbounded.vtu", "conformal_bound4.vtu"}) {
         EXPECT_TRUE(fs::exists(path(std::string("demo/") + f))) << f;
     }
+}
+
+TEST_F(SaCommand, ParamWritesAVerifiedUvMapAndRejectsANonDisk) {
+    // A bumpy square: a disk surface in space.
+    SimplicialMesh mesh = grid_triangles(12, 12);
+    Eigen::MatrixXd lifted(mesh.num_vertices(), 3);
+    for (Index v = 0; v < mesh.num_vertices(); ++v) {
+        const double x = mesh.vertices(v, 0), y = mesh.vertices(v, 1);
+        lifted.row(v) << x, y, 0.2 * std::sin(4.0 * x) * y;
+    }
+    write_mesh_file(path("bump.off"), lifted, mesh.simplices);
+    const Outcome r = sa("param --mesh " + path("bump.off") + " --bound 2 --out " + path("uv.obj") +
+                         " --png " + path("uv.png") + " --report " + path("uv.json") + " --quiet");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("success: verified from the output positions"), std::string::npos)
+        << r.out;
+    std::ifstream obj(path("uv.obj"));
+    int vt = 0;
+    for (std::string line; std::getline(obj, line);) vt += line.rfind("vt ", 0) == 0;
+    EXPECT_EQ(vt, mesh.num_vertices());
+    EXPECT_GT(fs::file_size(path("uv.png")), 1000u);
+    EXPECT_TRUE(
+        nlohmann::json::parse(read(path("uv.json")))["parameterization"]["success"].get<bool>());
+
+    // The same square without the two triangles of one middle cell: two boundary loops.
+    const Eigen::RowVector2d cell_center(6.5 / 12.0, 6.5 / 12.0);
+    std::vector<Index> kept;
+    for (Index s = 0; s < mesh.num_simplices(); ++s) {
+        Eigen::RowVector2d centroid = Eigen::RowVector2d::Zero();
+        for (int k = 0; k < 3; ++k) centroid += mesh.vertices.row(mesh.simplices(s, k)) / 3.0;
+        if ((centroid - cell_center).norm() > 0.03) kept.push_back(s);
+    }
+    ASSERT_EQ(kept.size(), std::size_t(mesh.num_simplices() - 2));
+    Eigen::MatrixXi holed(kept.size(), 3);
+    for (std::size_t k = 0; k < kept.size(); ++k) holed.row(k) = mesh.simplices.row(kept[k]);
+    write_mesh_file(path("annulus.off"), lifted, holed);
+    const Outcome bad =
+        sa("param --mesh " + path("annulus.off") + " --out " + path("annulus-uv.obj"));
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+    EXPECT_NE(bad.err.find("annulus.off: the mesh has 2 boundary loops"), std::string::npos)
+        << bad.err;
+    EXPECT_FALSE(fs::exists(path("annulus-uv.obj")));
 }
 
 }  // namespace
