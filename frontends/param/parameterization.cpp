@@ -77,6 +77,11 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
         result.initial_uv;  // E_m measures the change from the initial map in every round
     problem.boundary_injective = options.free_boundary_injective;
     SimplexAssemblyOptions solver = options.solver;
+    // A submesh round repairs only the simplices at the bound and stalls at the initial map's
+    // maximum (camelhead: delta_con 5.96 against 1.83 in the full mode): the rounds of the optimal
+    // bound move the whole mesh unless the caller forces the submesh mode.
+    if (options.optimal_bound_rounds > 0 && solver.mode == SolveMode::kAuto)
+        solver.mode = SolveMode::kFull;
     const int rounds = std::max(1, options.optimal_bound_rounds);
     bool have_result = false;
     for (int round = 0; round < rounds; ++round) {

@@ -23,7 +23,8 @@ struct ParameterizationOptions {
     /// The distortion in the barrier (conformal or isometric), E_m and mu; bound, threads, mode.
     /// The driver sets no handles and takes E_m as configured here.
     SimplexAssemblyOptions solver;
-    /// Rounds of the optimal bound: 0 keeps solver.bound; n > 0 runs up to n rounds.
+    /// Rounds of the optimal bound: 0 keeps solver.bound; n > 0 runs up to n rounds, in the full
+    /// mode when solver.mode is kAuto (a submesh round stalls at the initial map's maximum).
     int optimal_bound_rounds = 0;
     /// The optimal bound stops when a round lowers the largest distortion by less than this share.
     double optimal_bound_tolerance = 1e-3;
