@@ -14,4 +14,12 @@ SimplicialMesh grid_triangles(int nx, int ny);
 /// Vertex (i, j, k) has index (k * (ny + 1) + j) * (nx + 1) + i.
 SimplicialMesh grid_tetrahedra(int nx, int ny, int nz);
 
+/// A torus in space (major radius R, minor radius r): the periodic nu x nv grid of its angles,
+/// two triangles per cell, outward normals. Closed, genus 1.
+SimplicialMesh torus_triangles(int nu, int nv, double R = 1.0, double r = 0.4);
+
+/// The unit sphere: an octahedron whose faces are each cut into n^2 triangles, vertices pushed
+/// onto the sphere. Closed, genus 0, outward normals.
+SimplicialMesh sphere_triangles(int n);
+
 }  // namespace sa
