@@ -16,12 +16,6 @@ namespace {
 
 using Complex = std::complex<double>;
 
-Eigen::Vector3d point(const SimplicialMesh& mesh, Index v) {
-    Eigen::Vector3d p = Eigen::Vector3d::Zero();
-    p.head(mesh.ambient_dimension()) = mesh.vertices.row(v).transpose();
-    return p;
-}
-
 /// Each face's orthonormal tangent frame (e1 along its first edge, e2 = n x e1) and area.
 struct FaceFrames {
     std::vector<Eigen::Vector3d> e1, e2;
@@ -33,9 +27,9 @@ struct FaceFrames {
         e2.resize(nf);
         area.resize(nf);
         for (Index f = 0; f < nf; ++f) {
-            const Eigen::Vector3d p0 = point(mesh, mesh.simplices(f, 0));
-            const Eigen::Vector3d a = point(mesh, mesh.simplices(f, 1)) - p0,
-                                  b = point(mesh, mesh.simplices(f, 2)) - p0;
+            const Eigen::Vector3d p0 = mesh.point(mesh.simplices(f, 0));
+            const Eigen::Vector3d a = mesh.point(mesh.simplices(f, 1)) - p0,
+                                  b = mesh.point(mesh.simplices(f, 2)) - p0;
             const Eigen::Vector3d n = a.cross(b);
             if (!(n.norm() > 0.0))
                 throw InputError("cross field: face " + std::to_string(f) + " is degenerate");
@@ -58,7 +52,7 @@ struct FaceFrames {
 /// r_fg across the interior facet: u_g = r_fg u_f transports a direction from f to g.
 Complex transport(const SimplicialMesh& mesh, const FaceFrames& frames,
                   const InteriorFacet& facet) {
-    const Eigen::Vector3d e = point(mesh, facet.vertices[1]) - point(mesh, facet.vertices[0]);
+    const Eigen::Vector3d e = mesh.point(facet.vertices[1]) - mesh.point(facet.vertices[0]);
     return std::conj(frames.direction(facet.simplex[0], e)) * frames.direction(facet.simplex[1], e);
 }
 
@@ -97,7 +91,7 @@ Eigen::MatrixXd smoothest_cross_field(const SimplicialMesh& mesh, const MeshTopo
     std::vector<unsigned char> is_fixed(nf, 0);
     for (const BoundaryFacet& b : topology.boundary_facets) {
         if (is_fixed[b.simplex]) continue;
-        const Eigen::Vector3d e = point(mesh, b.vertices[1]) - point(mesh, b.vertices[0]);
+        const Eigen::Vector3d e = mesh.point(b.vertices[1]) - mesh.point(b.vertices[0]);
         fixed[b.simplex] = std::pow(frames.direction(b.simplex, e), 4);
         is_fixed[b.simplex] = 1;
     }
@@ -209,8 +203,8 @@ std::vector<Singularity> cross_field_singularities(const SimplicialMesh& mesh,
             int k = 0;
             while (mesh.simplices(f, k) != v) ++k;
             const Index a = mesh.simplices(f, (k + 1) % 3), b = mesh.simplices(f, (k + 2) % 3);
-            const Eigen::Vector3d pv = point(mesh, v), ea = point(mesh, a) - pv,
-                                  eb = point(mesh, b) - pv;
+            const Eigen::Vector3d pv = mesh.point(v), ea = mesh.point(a) - pv,
+                                  eb = mesh.point(b) - pv;
             total -= std::atan2(ea.cross(eb).norm(), ea.dot(eb));
             // The next face counter-clockwise around v holds the directed edge v -> b.
             const auto next = face_of.find((long long)v * nv + b);

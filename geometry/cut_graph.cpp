@@ -12,18 +12,12 @@ namespace sa {
 
 namespace {
 
-Eigen::Vector3d point(const SimplicialMesh& mesh, Index v) {
-    Eigen::Vector3d p = Eigen::Vector3d::Zero();
-    p.head(mesh.ambient_dimension()) = mesh.vertices.row(v).transpose();
-    return p;
-}
-
 /// The direction d of face f relative to the edge vector e, as an angle in the face's plane.
 double angle_to(const SimplicialMesh& mesh, Index f, const Eigen::Vector3d& e,
                 const Eigen::Vector3d& d) {
-    const Eigen::Vector3d p0 = point(mesh, mesh.simplices(f, 0));
-    const Eigen::Vector3d n = (point(mesh, mesh.simplices(f, 1)) - p0)
-                                  .cross(point(mesh, mesh.simplices(f, 2)) - p0)
+    const Eigen::Vector3d p0 = mesh.point(mesh.simplices(f, 0));
+    const Eigen::Vector3d n = (mesh.point(mesh.simplices(f, 1)) - p0)
+                                  .cross(mesh.point(mesh.simplices(f, 2)) - p0)
                                   .normalized();
     return std::atan2(n.dot(e.cross(d)), e.dot(d));
 }
@@ -51,7 +45,7 @@ std::vector<int> cross_field_matchings(const SimplicialMesh& mesh, const MeshTop
     matching.reserve(topology.interior_facets.size());
     for (const InteriorFacet& facet : topology.interior_facets) {
         // Angles to the shared edge are kept by the transport: compare them modulo quarter turns.
-        const Eigen::Vector3d e = point(mesh, facet.vertices[1]) - point(mesh, facet.vertices[0]);
+        const Eigen::Vector3d e = mesh.point(facet.vertices[1]) - mesh.point(facet.vertices[0]);
         const Index f = facet.simplex[0], g = facet.simplex[1];
         const double turn = angle_to(mesh, g, e, directions.row(g).transpose()) -
                             angle_to(mesh, f, e, directions.row(f).transpose());

@@ -15,12 +15,6 @@ namespace sa {
 
 namespace {
 
-Eigen::Vector3d point(const SimplicialMesh& mesh, Index v) {
-    Eigen::Vector3d p = Eigen::Vector3d::Zero();
-    p.head(mesh.ambient_dimension()) = mesh.vertices.row(v).transpose();
-    return p;
-}
-
 std::vector<Index> the_loop(const SimplicialMesh& mesh, const MeshTopology& topology) {
     const auto loops = boundary_loops(mesh, topology);
     if (loops.size() != 1) {
@@ -36,7 +30,7 @@ Eigen::MatrixXd circle_boundary(const SimplicialMesh& mesh, const std::vector<In
     const std::size_t n = loop.size();
     std::vector<double> length(n + 1, 0.0);
     for (std::size_t k = 0; k < n; ++k)
-        length[k + 1] = length[k] + (point(mesh, loop[(k + 1) % n]) - point(mesh, loop[k])).norm();
+        length[k + 1] = length[k] + (mesh.point(loop[(k + 1) % n]) - mesh.point(loop[k])).norm();
     Eigen::MatrixXd circle(n, 2);
     for (std::size_t k = 0; k < n; ++k) {
         const double angle = 2.0 * M_PI * length[k] / length[n];
@@ -77,8 +71,8 @@ Eigen::MatrixXd tutte_embedding(const SimplicialMesh& mesh, const MeshTopology& 
             const Index fi = free_index[i];
             if (fi < 0) continue;
             const Index j = mesh.simplices(s, (k + 1) % 3), l = mesh.simplices(s, (k + 2) % 3);
-            const Eigen::Vector3d eij = point(mesh, j) - point(mesh, i),
-                                  eil = point(mesh, l) - point(mesh, i);
+            const Eigen::Vector3d eij = mesh.point(j) - mesh.point(i),
+                                  eil = mesh.point(l) - mesh.point(i);
             const double angle = std::atan2(eij.cross(eil).norm(), eij.dot(eil));
             const double t = std::tan(0.5 * angle);
             // This triangle contributes t to w_ij and to w_il.
@@ -113,8 +107,8 @@ Eigen::MatrixXd lscm(const SimplicialMesh& mesh, const MeshTopology& topology) {
     auto farthest = [&](Index from) {
         Index best = loop.front();
         for (Index v : loop) {
-            if ((point(mesh, v) - point(mesh, from)).norm() >
-                (point(mesh, best) - point(mesh, from)).norm())
+            if ((mesh.point(v) - mesh.point(from)).norm() >
+                (mesh.point(best) - mesh.point(from)).norm())
                 best = v;
         }
         return best;
@@ -122,7 +116,7 @@ Eigen::MatrixXd lscm(const SimplicialMesh& mesh, const MeshTopology& topology) {
     const Index a = farthest(loop.front()), b = farthest(a);
     const Index nv = mesh.num_vertices();
     Eigen::MatrixXd x = Eigen::MatrixXd::Zero(nv, 2);
-    x.row(b) << (point(mesh, b) - point(mesh, a)).norm(), 0.0;
+    x.row(b) << (mesh.point(b) - mesh.point(a)).norm(), 0.0;
     // Unknowns: (u_v, v_v) of every vertex but the pins, interleaved.
     std::vector<Index> free_index(nv, -1);
     Index nf = 0;

@@ -24,6 +24,12 @@ struct SimplicialMesh {
     int ambient_dimension() const { return static_cast<int>(vertices.cols()); }
     Index num_vertices() const { return static_cast<Index>(vertices.rows()); }
     Index num_simplices() const { return static_cast<Index>(simplices.rows()); }
+    /// Vertex v in space: z = 0 for a planar mesh.
+    Eigen::Vector3d point(Index v) const {
+        Eigen::Vector3d p = Eigen::Vector3d::Zero();
+        p.head(ambient_dimension()) = vertices.row(v).transpose();
+        return p;
+    }
 };
 
 /// Checks the mesh's shape and indices: 2 or 3 columns of finite coordinates, 3 or 4 vertex
