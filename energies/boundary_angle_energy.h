@@ -28,6 +28,11 @@ namespace sa {
 
 inline constexpr int kMaxFan = 12;
 
+/// E_theta of one boundary vertex from its angle sum: 1 / (2 pi - theta), +inf from 2 pi on.
+inline double boundary_angle_barrier(double theta) {
+    return theta < 2.0 * M_PI ? 1.0 / (2.0 * M_PI - theta) : kInfinity;
+}
+
 namespace detail {
 
 /// An edge image linear in the variables: u = c0 x[i0 : i0 + 2] + c1 x[i1 : i1 + 2].
@@ -53,12 +58,10 @@ double angle_sum_barrier(const Vec<N>& x, const std::array<std::array<LinearEdge
         if (a.squaredNorm() == 0.0 || b.squaredNorm() == 0.0) return kInfinity;
         theta += std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
     }
-    if (!(theta < 2.0 * M_PI)) return kInfinity;
-    const double gap = 2.0 * M_PI - theta;
-    const double energy = 1.0 / gap;
-    if (g == nullptr) return energy;
+    const double energy = boundary_angle_barrier(theta);
+    if (g == nullptr || energy == kInfinity) return energy;
 
-    // E' = 1 / gap^2 and E'' = 2 / gap^3 with respect to theta.
+    // E' = E^2 and E'' = 2 E^3 with respect to theta.
     const double d1 = energy * energy, d2 = 2.0 * d1 * energy;
     Vec<N> dtheta = Vec<N>::Zero();
     h->setZero();

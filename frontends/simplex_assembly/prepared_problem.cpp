@@ -5,6 +5,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
+#include "energies/boundary_angle_energy.h"
 #include "energies/distortion.h"
 #include "geometry/disassembly.h"
 #include "geometry/vertex_recovery.h"
@@ -26,14 +27,18 @@ void open_boundary_angles(const SimplicialMesh& mesh, const std::vector<Boundary
         const Eigen::Vector2d a = A * E.col(0), b = A * E.col(1);
         return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
     };
+    auto angle_sum = [&](const BoundaryFan& fan) {
+        double theta = 0.0;
+        for (std::size_t k = 0; k < fan.triangles.size(); ++k) {
+            theta += angle(A[fan.triangles[k]], fan_edges(mesh, frames, fan, k));
+        }
+        return theta;
+    };
     const double target = 0.95 * 2.0 * M_PI;
     for (int pass = 0; pass < 10; ++pass) {
         bool changed = false;
         for (const BoundaryFan& fan : fans) {
-            double theta = 0.0;
-            for (std::size_t k = 0; k < fan.triangles.size(); ++k) {
-                theta += angle(A[fan.triangles[k]], fan_edges(mesh, frames, fan, k));
-            }
+            const double theta = angle_sum(fan);
             if (theta < target) continue;
             changed = true;
             const double ratio = target / theta;
@@ -52,10 +57,7 @@ void open_boundary_angles(const SimplicialMesh& mesh, const std::vector<Boundary
         if (!changed) return;
     }
     for (const BoundaryFan& fan : fans) {
-        double theta = 0.0;
-        for (std::size_t k = 0; k < fan.triangles.size(); ++k)
-            theta += angle(A[fan.triangles[k]], fan_edges(mesh, frames, fan, k));
-        if (!(theta < 2.0 * M_PI)) {
+        if (!(angle_sum(fan) < 2.0 * M_PI)) {
             throw InputError(source + ": cannot start with the angle sum at boundary vertex " +
                              std::to_string(fan.vertex) + " below 2 pi");
         }
@@ -223,9 +225,8 @@ template <int D>
 double mesh_energy(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions) {
     const std::vector<Mat<D>> A = linear_parts<D>(p.mesh, p.frames, positions);
     double boundary = 0.0;
-    for (double theta : boundary_angle_sums(p.assembly.fans, positions)) {
-        boundary += theta < 2.0 * M_PI ? 1.0 / (2.0 * M_PI - theta) : kInfinity;
-    }
+    for (double theta : boundary_angle_sums(p.assembly.fans, positions))
+        boundary += boundary_angle_barrier(theta);
     return boundary + tbb::parallel_deterministic_reduce(
                           tbb::blocked_range<Index>(0, p.mesh.num_simplices(), 1024), 0.0,
                           [&](const tbb::blocked_range<Index>& r, double sum) {
