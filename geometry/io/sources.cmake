@@ -2,6 +2,7 @@
 set(SA_GEOMETRY_IO_SOURCES
     io/atomic_file.cpp
     io/dmat_io.cpp
+    io/frame_field_io.cpp
     io/index_list_io.cpp
     io/medit_io.cpp
     io/mesh_file.cpp

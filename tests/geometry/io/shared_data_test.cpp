@@ -4,12 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "geometry/io/dmat_io.h"
+#include "geometry/io/frame_field_io.h"
 #include "geometry/io/index_list_io.h"
 #include "geometry/io/medit_io.h"
 #include "geometry/io/mesh_file.h"
@@ -209,6 +211,7 @@ TEST_F(SharedData, SurfaceMeshes) {
 TEST_F(SharedData, FrameFieldMatrices) {
     const std::map<std::string, std::pair<Index, Index>> expected{
         {"3holes-miq-FUV", {7200, 3}}, {"3holes-miq-UV", {4023, 2}},
+        {"bumpy-cube", {22224, 7}},  // the one binary .dmat
         {"inspired_mesh", {4288, 7}},  {"inspired_mesh_b", {84, 1}},
         {"inspired_mesh_bc", {84, 6}}, {"lilium_b", {323, 1}},
         {"lilium_bc", {323, 6}},       {"snail", {27, 1}},
@@ -219,11 +222,6 @@ TEST_F(SharedData, FrameFieldMatrices) {
     for (const std::string& file : files("frame-fields", ".dmat")) {
         const std::string name = fs::path(file).stem().string();
         SCOPED_TRACE(name);
-        if (name == "bumpy-cube") {  // the one binary .dmat
-            EXPECT_TRUE(test::throws_input_error([&] { read_dmat(file); },
-                                                 {"bumpy-cube.dmat:", "only ASCII"}));
-            continue;
-        }
         const auto it = expected.find(name);
         ASSERT_NE(it, expected.end());
         const Eigen::MatrixXd matrix = read_dmat(file);
@@ -233,6 +231,98 @@ TEST_F(SharedData, FrameFieldMatrices) {
     }
     EXPECT_EQ(checked, expected.size());
     EXPECT_EQ(read_dmat(path("deform/knight/decimated-knight-selection.dmat")).rows(), 502);
+}
+
+std::size_t count(const std::vector<unsigned char>& flags) {
+    return static_cast<std::size_t>(std::count(flags.begin(), flags.end(), 1));
+}
+
+TEST_F(SharedData, FrameFields) {
+    struct Field {
+        std::string mesh;
+        std::size_t given;
+        std::size_t constrained;
+        Index vectors;  // per face
+        bool has_v;
+    };
+    const std::map<std::string, Field> expected{
+        {"inspired_mesh.dmat", {"inspired_mesh", 4288, 84, 2, true}},  // flag, u, v; all given
+        {"snail1.dmat", {"snail", 27, 27, 1, false}},  // flag + k vectors, only flagged faces
+        {"snail2.dmat", {"snail", 27, 27, 2, true}},
+        {"snail3.dmat", {"snail", 27, 27, 3, false}},
+        {"snail4.dmat", {"snail", 27, 27, 4, false}},
+        {"bumpy-cube.dmat", {"bumpy-cube", 22224, 22224, 2, true}},  // binary face-index list
+        {"lilium.crossfield", {"lilium", 6590, 323, 2, true}},
+    };
+    std::map<std::string, Index> faces;
+    for (const auto& [name, field] : expected) {
+        if (faces.count(field.mesh) == 0)
+            faces[field.mesh] =
+                read_mesh_file(path("frame-fields/" + field.mesh + ".obj")).mesh.num_simplices();
+    }
+    std::map<std::string, FrameFieldFile> read;
+    for (const auto& [name, field] : expected) {
+        SCOPED_TRACE(name);
+        const Index num_faces = faces.at(field.mesh);
+        const FrameFieldFile file = read_frame_field(path("frame-fields/" + name), num_faces);
+        EXPECT_EQ(file.u.rows(), num_faces);
+        EXPECT_EQ(file.vectors.rows(), num_faces);
+        EXPECT_EQ(file.vectors.cols(), 3 * field.vectors);
+        EXPECT_EQ(file.v.rows(), field.has_v ? num_faces : 0);
+        EXPECT_EQ(count(file.given), field.given);
+        EXPECT_EQ(count(file.constrained), field.constrained);
+        read.emplace(name, file);
+    }
+    // The flagged faces of snail1-4 are the list snail.dmat, with the same first vector.
+    const Eigen::MatrixXd snail = read_dmat(path("frame-fields/snail.dmat"));
+    ASSERT_EQ(snail.rows(), 27);
+    for (const char* name : {"snail1.dmat", "snail2.dmat", "snail3.dmat", "snail4.dmat"}) {
+        const FrameFieldFile& file = read.at(name);
+        for (Eigen::Index i = 0; i < snail.rows(); ++i) {
+            const auto face = static_cast<Index>(snail(i, 0));
+            EXPECT_TRUE(file.constrained[static_cast<std::size_t>(face)]) << name << " " << face;
+            EXPECT_EQ(file.u.row(face), read.at("snail1.dmat").u.row(face)) << name;
+        }
+    }
+    // snail3: u and u turned by 60 and 120 degrees; snail4: u and u turned by 135, -90 and 45
+    // degrees (so vector 2 is perpendicular to u): PolyVectors, not frames.
+    auto cosine = [](const Eigen::MatrixXd& vectors, Eigen::Index f, int a, int b) {
+        const Eigen::Vector3d x = vectors.block<1, 3>(f, 3 * a).transpose();
+        const Eigen::Vector3d y = vectors.block<1, 3>(f, 3 * b).transpose();
+        return x.dot(y) / (x.norm() * y.norm());
+    };
+    for (Eigen::Index i = 0; i < snail.rows(); ++i) {
+        const auto face = static_cast<Eigen::Index>(snail(i, 0));
+        const Eigen::MatrixXd& three = read.at("snail3.dmat").vectors;
+        EXPECT_NEAR(cosine(three, face, 0, 1), 0.5, 1e-9);
+        EXPECT_NEAR(cosine(three, face, 0, 2), -0.5, 1e-9);
+        const Eigen::MatrixXd& four = read.at("snail4.dmat").vectors;
+        EXPECT_NEAR(cosine(four, face, 0, 1), -std::sqrt(0.5), 1e-9);
+        EXPECT_NEAR(cosine(four, face, 0, 2), 0.0, 1e-9);
+        EXPECT_NEAR(cosine(four, face, 0, 3), std::sqrt(0.5), 1e-9);
+    }
+
+    // libigl's _b.dmat / _bc.dmat pairs give the flagged faces of the dense files.
+    for (const auto& [stem, dense] : std::map<std::string, std::string>{
+             {"inspired_mesh", "inspired_mesh.dmat"}, {"lilium", "lilium.crossfield"}}) {
+        SCOPED_TRACE(stem);
+        const FrameFieldFile pair =
+            read_frame_field_constraints(path("frame-fields/" + stem + "_b.dmat"),
+                                         path("frame-fields/" + stem + "_bc.dmat"), faces.at(stem));
+        const FrameFieldFile& full = read.at(dense);
+        EXPECT_EQ(pair.given, full.constrained);
+        EXPECT_EQ(pair.constrained, full.constrained);
+        for (std::size_t f = 0; f < pair.given.size(); ++f) {
+            if (!pair.given[f]) continue;
+            const auto face = static_cast<Eigen::Index>(f);
+            EXPECT_LT((pair.u.row(face) - full.u.row(face)).norm(), 1e-5) << face;
+            EXPECT_LT((pair.v.row(face) - full.v.row(face)).norm(), 1e-5) << face;
+        }
+    }
+    // snail.dmat is a face list without vectors: not a field.
+    EXPECT_TRUE(test::throws_input_error(
+        [&] { read_frame_field(path("frame-fields/snail.dmat"), faces.at("snail")); },
+        {"snail.dmat: 27 rows x 1 columns; expected 1653 rows"}));
 }
 
 }  // namespace
