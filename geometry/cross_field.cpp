@@ -79,7 +79,8 @@ double wrap_quarter(double angle) {  // into (-pi/4, pi/4]
 
 }  // namespace
 
-Eigen::MatrixXd smoothest_cross_field(const SimplicialMesh& mesh, const MeshTopology& topology) {
+Eigen::MatrixXd smoothest_cross_field(const SimplicialMesh& mesh, const MeshTopology& topology,
+                                      const std::vector<CrossFieldConstraint>& constraints) {
     if (mesh.simplex_dimension() != 2)
         throw InvalidArgumentError("smoothest_cross_field: needs a triangle mesh");
     const FaceFrames frames(mesh);
@@ -94,6 +95,19 @@ Eigen::MatrixXd smoothest_cross_field(const SimplicialMesh& mesh, const MeshTopo
         const Eigen::Vector3d e = mesh.point(b.vertices[1]) - mesh.point(b.vertices[0]);
         fixed[b.simplex] = std::pow(frames.direction(b.simplex, e), 4);
         is_fixed[b.simplex] = 1;
+    }
+    for (const CrossFieldConstraint& c : constraints) {
+        if (c.face < 0 || c.face >= nf) {
+            throw InputError("cross field: constrained face " + std::to_string(c.face) +
+                             " is out of range (the mesh has " + std::to_string(nf) + " faces)");
+        }
+        const Complex d = frames.coordinates(c.face, c.direction);
+        if (!(std::abs(d) > 1e-6 * c.direction.norm()) || !std::isfinite(std::abs(d))) {
+            throw InputError("cross field: the direction given for face " + std::to_string(c.face) +
+                             " is zero or normal to the face");
+        }
+        fixed[c.face] = std::pow(d / std::abs(d), 4);
+        is_fixed[c.face] = 1;
     }
     Index n = 0;
     for (Index f = 0; f < nf; ++f) unknown[f] = is_fixed[f] ? -1 : n++;
@@ -127,7 +141,8 @@ Eigen::MatrixXd smoothest_cross_field(const SimplicialMesh& mesh, const MeshTopo
         solver.analyze(lower);
         if (solver.factorize(lower) != FactorizationStatus::kSuccess) {
             throw InputError(
-                "smoothest_cross_field: singular system (a part of the mesh touches no boundary?)");
+                "smoothest_cross_field: singular system (a part of the mesh touches no boundary "
+                "and no constrained face?)");
         }
         z = solver.solve(rhs);
     } else if (n == nf) {

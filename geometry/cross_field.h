@@ -16,6 +16,8 @@
 //                           direction (a boundary-aligned field; one linear solve); on a closed
 //                           surface, the eigenvector of the connection Laplacian with the smallest
 //                           eigenvalue relative to the face areas (inverse iteration, CHOLMOD).
+//                           Faces may also be constrained to given directions (as libigl's
+//                           constrained fields: the vectors a user placed).
 //   cross_field_singularities   per vertex, index = (K_v + sum of the field's turning across the
 //                           edges around v, each reduced to (-pi/4, pi/4]) / 2 pi, K_v the angle
 //                           defect (2 pi - the angle sum; pi - the angle sum at a boundary
@@ -30,8 +32,19 @@
 
 namespace sa {
 
-/// #F x 3: one unit tangent vector per face, representing its cross.
-Eigen::MatrixXd smoothest_cross_field(const SimplicialMesh& mesh, const MeshTopology& topology);
+/// A face whose cross is prescribed: one of its directions (tangent to the face up to a normal
+/// component, which is dropped; need not be unit).
+struct CrossFieldConstraint {
+    Index face;
+    Eigen::Vector3d direction;
+};
+
+/// #F x 3: one unit tangent vector per face, representing its cross. Constrained faces are fixed
+/// to their given direction (then, like a boundary, they make the problem one linear solve) and
+/// take precedence over the boundary alignment. Throws InputError for a constraint out of range
+/// or without a tangent component.
+Eigen::MatrixXd smoothest_cross_field(const SimplicialMesh& mesh, const MeshTopology& topology,
+                                      const std::vector<CrossFieldConstraint>& constraints = {});
 
 struct Singularity {
     Index vertex;

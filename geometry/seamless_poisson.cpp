@@ -48,6 +48,42 @@ SeamlessMap seamless_poisson(const SimplicialMesh& mesh, const MeshTopology& top
     const RestFrames<2> frames = rest_frames<2>(mesh);
     const Index nc = out.cut.mesh.num_vertices();
 
+    // Combing: t_g = t_f + k across every uncut edge (breadth-first from one face per part), so
+    // that the turned targets Rot(t_f) J_f match across it; a seam's matching becomes
+    // k + t_f - t_g.
+    out.chart_turns.assign(nf, -1);
+    std::vector<std::vector<std::pair<Index, int>>> uncut(nf);  // (neighbour, turns to it)
+    for (std::size_t i = 0; i < cut.size(); ++i) {
+        if (cut[i]) continue;
+        const auto& s = topology.interior_facets[i].simplex;
+        uncut[s[0]].emplace_back(s[1], matching[i]);
+        uncut[s[1]].emplace_back(s[0], -matching[i]);
+    }
+    for (Index root = 0; root < nf; ++root) {
+        if (out.chart_turns[root] >= 0) continue;
+        out.chart_turns[root] = 0;
+        std::vector<Index> queue{root};
+        for (std::size_t q = 0; q < queue.size(); ++q) {
+            const Index f = queue[q];
+            for (const auto& [g, k] : uncut[f]) {
+                if (out.chart_turns[g] >= 0) continue;
+                out.chart_turns[g] = ((out.chart_turns[f] + k) % 4 + 4) % 4;
+                queue.push_back(g);
+            }
+        }
+    }
+    std::vector<int> seam_turns(cut.size());
+    for (std::size_t i = 0; i < cut.size(); ++i) {
+        const auto& s = topology.interior_facets[i].simplex;
+        seam_turns[i] = ((matching[i] + out.chart_turns[s[0]] - out.chart_turns[s[1]]) % 4 + 4) % 4;
+        if (!cut[i] && seam_turns[i] != 0) {
+            throw InvalidArgumentError(
+                "seamless_poisson: the field turns around an uncut vertex (the cut misses a "
+                "singularity near faces " +
+                std::to_string(s[0]) + " and " + std::to_string(s[1]) + ")");
+        }
+    }
+
     // Gauge: the first vertex of each connected part of the cut mesh is fixed at the origin.
     const MeshTopology cut_topology = mesh_topology(out.cut.mesh, "cut mesh");
     Index parts = 0;
@@ -80,6 +116,7 @@ SeamlessMap seamless_poisson(const SimplicialMesh& mesh, const MeshTopology& top
     double edge_length = 0.0, area = 0.0;
     for (Index f = 0; f < nf; ++f) {
         const Mat<2>& E = frames.edge_inverse[f];
+        const Mat<2> target = seam_rotation(-out.chart_turns[f]) * jacobians[f];
         const double w = std::sqrt(frames.volume[f]);
         area += frames.volume[f];
         const Index p0 = out.cut.mesh.simplices(f, 0), p1 = out.cut.mesh.simplices(f, 1),
@@ -89,7 +126,7 @@ SeamlessMap seamless_poisson(const SimplicialMesh& mesh, const MeshTopology& top
         for (int r = 0; r < 2; ++r) {
             for (int c = 0; c < 2; ++c) {
                 add_row(w, {{p1, r, E(0, c)}, {p2, r, E(1, c)}, {p0, r, -E(0, c) - E(1, c)}},
-                        jacobians[f](r, c));
+                        target(r, c));
             }
         }
     }
@@ -106,7 +143,7 @@ SeamlessMap seamless_poisson(const SimplicialMesh& mesh, const MeshTopology& top
         const Index l = facet.simplex[0], r = facet.simplex[1], a = facet.vertices[0],
                     b = facet.vertices[1];
         const Seam s{copy_in(out.cut, l, a), copy_in(out.cut, l, b), copy_in(out.cut, r, a),
-                     copy_in(out.cut, r, b), seam_rotation(matching[i])};
+                     copy_in(out.cut, r, b), seam_rotation(seam_turns[i])};
         seams.push_back(s);
         for (int row = 0; row < 2;
              ++row) {  // (p_br - p_ar)_row - sum_c R(row, c) (p_bl - p_al)_c = 0
@@ -135,11 +172,18 @@ SeamlessMap seamless_poisson(const SimplicialMesh& mesh, const MeshTopology& top
     for (Index c = 0; c < nc; ++c) {
         if (unknown[c] >= 0) out.uv.row(c) << x[2 * unknown[c]], x[2 * unknown[c] + 1];
     }
+    double uv_edge_length = 0.0;  // the mean over the faces' first edges, as edge_length
+    for (Index f = 0; f < nf; ++f) {
+        uv_edge_length +=
+            (out.uv.row(out.cut.mesh.simplices(f, 1)) - out.uv.row(out.cut.mesh.simplices(f, 0)))
+                .norm();
+    }
+    uv_edge_length /= double(nf);
     for (const Seam& s : seams) {
         const Vec<2> df = (out.uv.row(s.bl) - out.uv.row(s.al)).transpose();
         const Vec<2> dg = (out.uv.row(s.br) - out.uv.row(s.ar)).transpose();
         out.max_seam_mismatch =
-            std::max(out.max_seam_mismatch, (dg - s.R * df).norm() / edge_length);
+            std::max(out.max_seam_mismatch, (dg - s.R * df).norm() / uv_edge_length);
     }
     return out;
 }

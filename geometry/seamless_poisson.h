@@ -10,6 +10,12 @@
 // translation, so the map is seamless. The seams are a penalty (w = 1e4 relative to the faces'
 // size); `max_seam_mismatch` reports how far from exact they end. One vertex per connected part
 // of the cut mesh is fixed at the origin (the translations are free).
+//
+// Combing: the faces joined by uncut edges form one chart, so the targets are first turned by
+// quarter turns, Rot(t_f) A_f, with t_f chosen breadth-first so that the matching of every uncut
+// edge becomes 0 (a seam's becomes k + t_f - t_g). This is always possible when the cut passes
+// through every singularity; otherwise InvalidArgumentError. The map's Jacobian on face f is then
+// Rot(t_f) A_f: the same cross, its (u, v) axes possibly exchanged or reversed.
 
 #include <vector>
 
@@ -19,10 +25,11 @@
 namespace sa {
 
 struct SeamlessMap {
-    CutMesh cut;         ///< the mesh opened along the cut
-    Eigen::MatrixXd uv;  ///< #cut vertices x 2
+    CutMesh cut;                   ///< the mesh opened along the cut
+    Eigen::MatrixXd uv;            ///< #cut vertices x 2
+    std::vector<int> chart_turns;  ///< t_f per face, in {0, 1, 2, 3}
     double max_seam_mismatch =
-        0.0;  ///< largest |d_g - R_e d_f| over the cut edges, over the mean rest edge length
+        0.0;  ///< largest |d_g - R_e d_f| over the cut edges, over the mean edge length in (u, v)
 };
 
 SeamlessMap seamless_poisson(const SimplicialMesh& mesh, const MeshTopology& topology,
