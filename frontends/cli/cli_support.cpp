@@ -1,5 +1,7 @@
 #include "frontends/cli/cli_support.h"
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -75,6 +77,19 @@ void check_writable(const std::string& path, bool overwrite) {
     if (!overwrite && std::filesystem::exists(path)) {
         throw InputError(path + " exists; pass --force to overwrite it");
     }
+}
+
+std::string extension(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    return ext;
+}
+
+double peak_memory_gb() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss / 1024.0 / 1024.0;
 }
 
 Logger stderr_logger(bool quiet) {

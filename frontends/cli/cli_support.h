@@ -24,6 +24,12 @@ void check_output_format(const std::string& path, int dimension);
 /// Throws InputError when `path` exists and `overwrite` is false.
 void check_writable(const std::string& path, bool overwrite);
 
+/// The extension of `path` in lower case, with its dot ("" when none).
+std::string extension(const std::string& path);
+
+/// The process's peak resident memory so far, in GB.
+double peak_memory_gb();
+
 /// A logger that writes each line to stderr (nothing when `quiet`).
 Logger stderr_logger(bool quiet);
 

@@ -1,7 +1,5 @@
 #include "frontends/cli/param_command.h"
 
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -24,19 +22,6 @@
 namespace sa::cli {
 
 namespace {
-
-std::string extension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return std::tolower(c); });
-    return ext;
-}
-
-double peak_memory_gb() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return usage.ru_maxrss / 1024.0 / 1024.0;
-}
 
 const std::vector<std::string> kInitialMaps = {"lscm", "tutte", "tutte-uniform", "harmonic"};
 

@@ -2,6 +2,7 @@
 //   sa map  ...   a mesh, an initial map and handles -> a verified inversion-free map
 //   sa demo ...   the paper's Figure 1 in miniature
 //   sa param ...  a planar parameterization of a disk-topology surface
+//   sa seamless   a seamless parameterization from a frame field (integrable by Simplex Assembly)
 //   sa subdivide  Loop subdivision (to build large test meshes)
 // Exit status: 0 verified success, 1 a result that did not pass verification, 2 bad input.
 #include <CLI/CLI.hpp>
@@ -10,6 +11,7 @@
 #include "frontends/cli/demo_command.h"
 #include "frontends/cli/map_command.h"
 #include "frontends/cli/param_command.h"
+#include "frontends/cli/seamless_command.h"
 #include "optim/errors.h"
 
 int main(int argc, char** argv) {
@@ -22,6 +24,8 @@ int main(int argc, char** argv) {
     CLI::App* demo = sa::cli::add_demo_command(app, demo_arguments);
     sa::cli::ParamArguments param_arguments;
     CLI::App* param = sa::cli::add_param_command(app, param_arguments);
+    sa::cli::SeamlessArguments seamless_arguments;
+    CLI::App* seamless = sa::cli::add_seamless_command(app, seamless_arguments);
     sa::cli::SubdivideArguments subdivide_arguments;
     CLI::App* subdivide = sa::cli::add_subdivide_command(app, subdivide_arguments);
     try {
@@ -34,6 +38,7 @@ int main(int argc, char** argv) {
         if (map->parsed()) return sa::cli::run_map_command(map_arguments);
         if (demo->parsed()) return sa::cli::run_demo_command(demo_arguments);
         if (param->parsed()) return sa::cli::run_param_command(param_arguments);
+        if (seamless->parsed()) return sa::cli::run_seamless_command(seamless_arguments);
         if (subdivide->parsed()) return sa::cli::run_subdivide_command(subdivide_arguments);
     } catch (const sa::Error& e) {
         std::cerr << "sa: error: " << e.what() << '\n';

@@ -190,5 +190,42 @@ TEST_F(SaCommand, ParamWritesAVerifiedUvMapAndRejectsANonDisk) {
     EXPECT_FALSE(fs::exists(path("annulus-uv.obj")));
 }
 
+TEST_F(SaCommand, SeamlessWritesAVerifiedMapItsPictureAndRejectsABadField) {
+    const SimplicialMesh sphere = sphere_triangles(6);
+    write_mesh_file(path("sphere.off"), sphere.vertices, sphere.simplices);
+    const Outcome r = sa("seamless --mesh " + path("sphere.off") + " --out " + path("s.obj") +
+                         " --report " + path("s.json") + " --quiet");
+    ASSERT_EQ(r.status, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("success: verified from the (u, v)"), std::string::npos) << r.out;
+    const nlohmann::json report = nlohmann::json::parse(read(path("s.json")));
+    EXPECT_TRUE(report["success"].get<bool>());
+    EXPECT_EQ(report["singularities_after"], report["singularities_before"]);
+    EXPECT_EQ(report["result"]["quality"]["inverted"].get<int>(), 0);
+    // Per-corner texture coordinates: more vt lines than vertices (the seams are cut).
+    std::ifstream obj(path("s.obj"));
+    int vt = 0, faces_with_vt = 0;
+    for (std::string line; std::getline(obj, line);) {
+        vt += line.rfind("vt ", 0) == 0;
+        faces_with_vt += line.rfind("f ", 0) == 0 && line.find('/') != std::string::npos;
+    }
+    EXPECT_GT(vt, sphere.num_vertices());
+    EXPECT_EQ(faces_with_vt, sphere.num_simplices());
+    EXPECT_GT(fs::file_size(path("s.vtu")), 1000u);
+    EXPECT_GT(fs::file_size(path("s.png")), 10000u);  // rendered (under Xvfb without a display)
+
+    // A field with one row too few: one line naming the file, exit 2, nothing written.
+    std::ofstream field(path("short.dmat"));
+    field << "3 " << sphere.num_simplices() - 1 << "\n";
+    for (Index i = 0; i < 3 * (sphere.num_simplices() - 1); ++i) field << "1\n";
+    field.close();
+    const Outcome bad = sa("seamless --mesh " + path("sphere.off") + " --field " +
+                           path("short.dmat") + " --out " + path("bad.obj"));
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+    EXPECT_NE(bad.err.find("short.dmat"), std::string::npos) << bad.err;
+    EXPECT_FALSE(fs::exists(path("bad.obj")));
+    EXPECT_FALSE(fs::exists(path("bad.png")));
+}
+
 }  // namespace
 }  // namespace sa

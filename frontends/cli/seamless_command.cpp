@@ -1,0 +1,281 @@
+#include "frontends/cli/seamless_command.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "frontends/cli/cli_support.h"
+#include "frontends/output/checkerboard_picture.h"
+#include "frontends/output/map_output.h"
+#include "frontends/output/map_report.h"
+#include "frontends/seamless/seamless_parameterization.h"
+#include "geometry/io/frame_field_io.h"
+#include "geometry/io/mesh_file.h"
+#include "geometry/io/obj_io.h"
+#include "geometry/io/vtk_io.h"
+#include "optim/errors.h"
+#include "optim/stopwatch.h"
+
+namespace sa::cli {
+
+namespace {
+
+std::string with_extension(const std::string& path, const std::string& ext) {
+    return std::filesystem::path(path).replace_extension(ext).string();
+}
+
+/// Per face: the largest relative curl over its interior edges.
+Eigen::VectorXd face_curl(const MeshTopology& topology, Index faces, const Eigen::VectorXd& curl) {
+    Eigen::VectorXd out = Eigen::VectorXd::Zero(faces);
+    for (std::size_t i = 0; i < topology.interior_facets.size(); ++i) {
+        for (Index f : topology.interior_facets[i].simplex) out[f] = std::max(out[f], curl[i]);
+    }
+    return out;
+}
+
+/// The rows of A_f as vectors in space (#F x 3 each).
+std::pair<Eigen::MatrixXd, Eigen::MatrixXd> field_vectors(const RestFrames<2>& frames,
+                                                          const std::vector<Mat<2>>& field) {
+    Eigen::MatrixXd u(frames.size(), 3), v(frames.size(), 3);
+    for (Index f = 0; f < frames.size(); ++f) {
+        u.row(f) = (frames.axes[f] * field[f].row(0).transpose()).transpose();
+        v.row(f) = (frames.axes[f] * field[f].row(1).transpose()).transpose();
+    }
+    return {u, v};
+}
+
+/// The cut mesh in space with (u, v), the fields, curls and distortion: for ParaView.
+void write_seamless_vtu(const std::string& path, const SimplicialMesh& mesh,
+                        const SeamlessResult& r) {
+    const CutMesh& cut = r.result.map.cut;
+    const Index nc = cut.mesh.num_vertices(), nf = mesh.num_simplices();
+    Eigen::MatrixXd positions(nc, 3), uv = Eigen::MatrixXd::Zero(nc, 3),
+                                      singularity = Eigen::MatrixXd::Zero(nc, 1);
+    for (Index c = 0; c < nc; ++c) {
+        positions.row(c) = mesh.point(cut.original_vertex[c]).transpose();
+        uv.row(c).head<2>() = r.result.map.uv.row(c);
+    }
+    std::vector<double> index(mesh.num_vertices(), 0.0);
+    for (const Singularity& s : r.singularities_after) index[s.vertex] = s.index;
+    for (Index c = 0; c < nc; ++c) singularity(c, 0) = index[cut.original_vertex[c]];
+    SimplicialMesh surface = mesh;
+    if (surface.vertices.cols() == 2) {
+        surface.vertices.conservativeResize(Eigen::NoChange, 3);
+        surface.vertices.col(2).setZero();
+    }
+    const MeshTopology topology = mesh_topology(surface, path);
+    const RestFrames<2> frames = rest_frames<2>(surface);
+    const auto [u_before, v_before] = field_vectors(frames, r.field_before);
+    const auto [u_after, v_after] = field_vectors(frames, r.field_after);
+    std::vector<DataArray> cells = quality_cell_data(r.result.quality);
+    cells.push_back({"field_u", u_after});
+    cells.push_back({"field_v", v_after});
+    cells.push_back({"input_field_u", u_before});
+    cells.push_back({"input_field_v", v_before});
+    cells.push_back({"curl_before", face_curl(topology, nf, r.curl_before)});
+    cells.push_back({"curl_after", face_curl(topology, nf, r.curl_after)});
+    Eigen::MatrixXd turns(nf, 1);
+    for (Index f = 0; f < nf; ++f) turns(f, 0) = r.result.map.chart_turns[f];
+    cells.push_back({"chart_quarter_turns", turns, true});
+    write_vtu(path, positions, cut.mesh.simplices, {{"uv", uv}, {"singularity_index", singularity}},
+              cells);
+}
+
+nlohmann::json singularities_json(const std::vector<Singularity>& list) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const Singularity& s : list) out.push_back({{"vertex", s.vertex}, {"index", s.index}});
+    return out;
+}
+
+nlohmann::json verified_json(const VerifiedSeamlessMap& m) {
+    return {{"quality", quality_json(m.quality)},
+            {"max_seam_mismatch", m.map.max_seam_mismatch},
+            {"cut_vertices", m.map.cut.mesh.num_vertices()}};
+}
+
+}  // namespace
+
+CLI::App* add_seamless_command(CLI::App& app, SeamlessArguments& a) {
+    CLI::App* cmd = app.add_subcommand(
+        "seamless",
+        "Seamless parameterization from a frame field made integrable by Simplex Assembly");
+    cmd->add_option("--mesh", a.mesh, "the surface: .obj .off .ply .stl .vtk .vtu (triangles)")
+        ->required();
+    cmd->add_option("--field", a.field,
+                    "per-face frame or cross field: libigl .dmat (ASCII or binary) or "
+                    ".crossfield; faces it leaves free are filled by the smoothest cross field. "
+                    "Without it (and without --constraints), the smoothest cross field");
+    cmd->add_option("--constraints", a.constraints,
+                    "libigl's pair B.dmat BC.dmat: constrained faces and their vectors; the "
+                    "smoothest cross field through them")
+        ->expected(2);
+    cmd->add_option("--scale", a.scale,
+                    "H: mesh length per unit of (u, v), one checkerboard square (default: 1/30 of "
+                    "the bounding-box diagonal)");
+    cmd->add_option("--mu", a.mu, "weight of E_m = |phi' - phi|^2")->capture_default_str();
+    cmd->add_option("--threads", a.threads, "worker threads, 0 = all cores")->capture_default_str();
+    cmd->add_option("--max-iterations", a.max_iterations, "Newton iterations at most")
+        ->capture_default_str();
+    cmd->add_option("--out", a.out, "the surface with per-corner texture coordinates (.obj)")
+        ->required();
+    cmd->add_option("--vtu", a.vtu,
+                    "the cut surface for ParaView: uv, fields, curls, distortion (default: --out "
+                    "with .vtu)");
+    cmd->add_option("--png", a.png,
+                    "the surface textured with a checkerboard of (u, v), rendered with VTK "
+                    "(default: --out with .png)");
+    cmd->add_flag("--no-vtu", a.no_vtu, "do not write the .vtu");
+    cmd->add_flag("--no-png", a.no_png, "do not render the picture");
+    cmd->add_option("--report", a.report, "JSON report");
+    cmd->add_flag("--force", a.force, "overwrite existing output files");
+    cmd->add_flag("--quiet", a.quiet, "no progress rows on stderr");
+    return cmd;
+}
+
+int run_seamless_command(const SeamlessArguments& a) {
+    Stopwatch total, stage;
+    if (extension(a.out) != ".obj")
+        throw InvalidArgumentError(a.out + ": the seamless map is written as .obj (vt per corner)");
+    if (!a.field.empty() && !a.constraints.empty())
+        throw InvalidArgumentError("give --field or --constraints, not both");
+    const std::string vtu = a.no_vtu ? "" : a.vtu.empty() ? with_extension(a.out, ".vtu") : a.vtu;
+    const std::string png = a.no_png ? "" : a.png.empty() ? with_extension(a.out, ".png") : a.png;
+    if (!vtu.empty() && extension(vtu) != ".vtu")
+        throw InvalidArgumentError(vtu + ": --vtu takes a .vtu file");
+    if (!png.empty() && extension(png) != ".png")
+        throw InvalidArgumentError(png + ": --png takes a .png file");
+    for (const std::string* path : {&a.out, &vtu, &png, &a.report}) {
+        if (!path->empty()) check_writable(*path, a.force);
+    }
+    SeamlessOptions options;
+    options.scale = a.scale;
+    options.integrable.mu = a.mu;
+    options.integrable.num_threads = a.threads;
+    options.integrable.max_iterations = a.max_iterations;
+    if (a.scale < 0.0) throw InvalidArgumentError("--scale must be > 0");
+
+    MeshFile file = read_mesh_file(a.mesh);
+    for (const std::string& warning : file.warnings)
+        std::cerr << "sa: warning: " << warning << '\n';
+    const SimplicialMesh& mesh = file.mesh;
+    if (mesh.simplex_dimension() != 2)
+        throw InputError(a.mesh + ": seamless parameterization needs a triangle mesh");
+    std::optional<FrameFieldInput> field;
+    std::string field_layout;
+    if (!a.field.empty() || !a.constraints.empty()) {
+        const FrameFieldFile f = a.field.empty()
+                                     ? read_frame_field_constraints(
+                                           a.constraints[0], a.constraints[1], mesh.num_simplices())
+                                     : read_frame_field(a.field, mesh.num_simplices());
+        field_layout = f.layout;
+        field = FrameFieldInput{f.u, f.v, f.given};
+        if (std::find(f.given.begin(), f.given.end(), 0) == f.given.end()) field->given.clear();
+    }
+    const double read_time = stage.lap();
+    std::cout << "sa seamless: " << mesh.num_simplices() << " triangles, " << mesh.num_vertices()
+              << " vertices (" << a.mesh << ")"
+              << (field_layout.empty() ? "" : ", field: " + field_layout) << "\n";
+    const SeamlessResult r =
+        seamless_parameterization(mesh, field, options, stderr_logger(a.quiet));
+    stage.lap();
+
+    const CutMesh& cut = r.result.map.cut;
+    Eigen::MatrixXd positions = mesh.vertices;
+    write_obj(a.out, positions, mesh.simplices, &r.result.map.uv, &cut.mesh.simplices);
+    if (!vtu.empty()) write_seamless_vtu(vtu, mesh, r);
+    if (!png.empty()) {
+        Eigen::MatrixXd cut_positions(cut.mesh.num_vertices(), mesh.vertices.cols());
+        for (Index c = 0; c < cut.mesh.num_vertices(); ++c)
+            cut_positions.row(c) = mesh.vertices.row(cut.original_vertex[c]);
+        CheckerboardPicture picture;
+        char title[256];
+        std::snprintf(title, sizeof title, "%s: %ld faces, %zu singularities, %ld foldovers%s",
+                      std::filesystem::path(a.mesh).filename().c_str(), long(mesh.num_simplices()),
+                      r.singularities_after.size(), long(r.result.quality.inverted),
+                      r.success ? "" : " (FAILED)");
+        picture.title = title;
+        write_checkerboard_png(png, cut_positions, cut.mesh.simplices, r.result.map.uv, picture);
+    }
+    const double output_time = stage.lap();
+    if (!a.report.empty()) {
+        const IntegrableField& in = r.integrable;
+        nlohmann::json iterations = nlohmann::json::array();
+        for (const IterationRecord& it : in.newton.iterations) {
+            iterations.push_back({{"iteration", it.iteration},
+                                  {"energy", it.energy},
+                                  {"step", it.step_length},
+                                  {"time", it.cumulative_time}});
+        }
+        const nlohmann::json report = {
+            {"command", "seamless"},
+            {"mesh", a.mesh},
+            {"faces", mesh.num_simplices()},
+            {"vertices", mesh.num_vertices()},
+            {"field", a.field.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.field)},
+            {"field_source", r.field_source},
+            {"field_layout", field_layout},
+            {"options",
+             {{"scale", r.scale},
+              {"mu", options.integrable.mu},
+              {"assembly_tolerance", options.integrable.assembly_tolerance},
+              {"seam_tolerance", options.seam_tolerance},
+              {"max_iterations", options.integrable.max_iterations}}},
+            {"singularities_before", singularities_json(r.singularities_before)},
+            {"singularities_after", singularities_json(r.singularities_after)},
+            {"singularities_kept", r.singularities_kept},
+            {"matchings_kept", r.matchings_kept},
+            {"cut_edges", r.cut_edges},
+            {"curl_before", {{"max", r.curl_stats_before.max}, {"mean", r.curl_stats_before.mean}}},
+            {"curl_after", {{"max", r.curl_stats_after.max}, {"mean", r.curl_stats_after.mean}}},
+            {"integrable",
+             {{"assembled", in.assembled},
+              {"sum_curl_squared", in.assembly},
+              {"termination", to_string(in.newton.termination)},
+              {"iterations", iterations}}},
+            {"plain_poisson", verified_json(r.plain)},
+            {"result", verified_json(r.result)},
+            {"success", r.success},
+            {"message", r.message},
+            {"times",
+             {{"read", read_time},
+              {"field", r.times.field},
+              {"cut", r.times.cut},
+              {"plain_poisson", r.times.plain_poisson},
+              {"integrable", r.times.integrable},
+              {"poisson", r.times.poisson},
+              {"verification", r.times.verification},
+              {"output", output_time},
+              {"total", total.seconds()}}},
+            {"peak_memory_gb", peak_memory_gb()}};
+        write_json(a.report, report);
+    }
+    std::string singular;
+    for (std::size_t i = 0; i < r.singularities_before.size() && i < 8; ++i) {
+        singular += (i ? ", " : "") + std::to_string(r.singularities_before[i].vertex) + " (" +
+                    std::to_string(r.singularities_before[i].index).substr(0, 5) + ")";
+    }
+    if (r.singularities_before.size() > 8) singular += ", ...";
+    char line[768];
+    std::snprintf(line, sizeof line,
+                  "  field: %s; %zu singularities%s%s%s, %ld cut edges\n"
+                  "  edge curl (relative): max %.3g mean %.3g -> max %.3g mean %.3g "
+                  "(%d Simplex Assembly iterations)\n"
+                  "  Poisson map of the input field: %ld foldovers; ours: %ld foldovers, seam "
+                  "mismatch %.3g, conformal distortion max %.4g mean %.4g\n"
+                  "  time %.2f s (read %.2f, field %.2f, Simplex Assembly %.2f, Poisson %.2f, "
+                  "output %.2f); peak memory %.2f GB\n",
+                  r.field_source.c_str(), r.singularities_before.size(),
+                  singular.empty() ? "" : " at vertices ", singular.c_str(), "", long(r.cut_edges),
+                  r.curl_stats_before.max, r.curl_stats_before.mean, r.curl_stats_after.max,
+                  r.curl_stats_after.mean, r.integrable.newton.num_steps(),
+                  long(r.plain.quality.inverted), long(r.result.quality.inverted),
+                  r.result.map.max_seam_mismatch, r.result.quality.conformal.max,
+                  r.result.quality.conformal.mean, total.seconds(), read_time, r.times.field,
+                  r.times.integrable, r.times.poisson, output_time, peak_memory_gb());
+    std::cout << line << "  " << r.message << "\n  wrote " << a.out
+              << (vtu.empty() ? "" : ", " + vtu) << (png.empty() ? "" : ", " + png)
+              << (a.report.empty() ? "" : ", " + a.report) << "\n";
+    return r.success ? 0 : 1;
+}
+
+}  // namespace sa::cli

@@ -1,0 +1,195 @@
+#include "frontends/seamless/seamless_parameterization.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "geometry/cut_graph.h"
+#include "geometry/frame_field.h"
+#include "optim/errors.h"
+#include "optim/stopwatch.h"
+
+namespace sa {
+
+namespace {
+
+/// Throws InputError unless every interior edge is traversed in opposite directions by its faces.
+void check_oriented(const SimplicialMesh& mesh, const MeshTopology& topology,
+                    const std::string& source) {
+    auto forward = [&](Index f, Index a, Index b) {
+        for (int k = 0; k < 3; ++k) {
+            if (mesh.simplices(f, k) == a && mesh.simplices(f, (k + 1) % 3) == b) return true;
+        }
+        return false;
+    };
+    for (const InteriorFacet& facet : topology.interior_facets) {
+        const Index a = facet.vertices[0], b = facet.vertices[1];
+        if (forward(facet.simplex[0], a, b) == forward(facet.simplex[1], a, b)) {
+            throw InputError(source + ": faces " + std::to_string(facet.simplex[0]) + " and " +
+                             std::to_string(facet.simplex[1]) +
+                             " are oriented inconsistently across the edge " + std::to_string(a) +
+                             "-" + std::to_string(b));
+        }
+    }
+}
+
+CurlStats curl_stats(const Eigen::VectorXd& curl) {
+    if (curl.size() == 0) return {};
+    return {curl.maxCoeff(), curl.mean()};
+}
+
+VerifiedSeamlessMap poisson_verified(const SimplicialMesh& mesh, const MeshTopology& topology,
+                                     const SeamlessResult& r, const std::vector<Mat<2>>& field,
+                                     double to_jacobian) {
+    std::vector<Mat<2>> jacobians(field.size());
+    for (std::size_t f = 0; f < field.size(); ++f) jacobians[f] = to_jacobian * field[f];
+    VerifiedSeamlessMap out;
+    out.map = seamless_poisson(mesh, topology, r.cut, r.matching, jacobians);
+    const RestFrames<2> frames = rest_frames<2>(out.map.cut.mesh);
+    out.quality =
+        map_quality<2>(linear_parts<2>(out.map.cut.mesh, frames, out.map.uv), frames.volume);
+    return out;
+}
+
+/// The cone points of a map, measured from its (u, v): per interior vertex, index = 1 - (sum of
+/// its corner angles in (u, v)) / 2 pi, rounded to a quarter; `deviation` receives the largest
+/// distance of an angle sum from its rounded value, in radians.
+std::vector<Singularity> cone_singularities(const SimplicialMesh& mesh,
+                                            const MeshTopology& topology, const SeamlessMap& map,
+                                            double& deviation) {
+    std::vector<double> angle_sum(mesh.num_vertices(), 0.0);
+    const Eigen::MatrixXi& faces = map.cut.mesh.simplices;
+    for (Index f = 0; f < faces.rows(); ++f) {
+        for (int k = 0; k < 3; ++k) {
+            const Eigen::RowVector2d p = map.uv.row(faces(f, k)),
+                                     a = map.uv.row(faces(f, (k + 1) % 3)) - p,
+                                     b = map.uv.row(faces(f, (k + 2) % 3)) - p;
+            angle_sum[map.cut.original_vertex[faces(f, k)]] +=
+                std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+        }
+    }
+    std::vector<Singularity> cones;
+    deviation = 0.0;
+    for (Index v = 0; v < mesh.num_vertices(); ++v) {
+        if (!topology.used_vertex[v] || topology.boundary_vertex[v]) continue;
+        const double quarters = 4.0 * (1.0 - angle_sum[v] / (2.0 * M_PI));
+        deviation = std::max(deviation, std::abs(quarters - std::round(quarters)) * 0.5 * M_PI);
+        if (std::round(quarters) != 0.0) cones.push_back({v, std::round(quarters) / 4.0});
+    }
+    return cones;
+}
+
+bool same_singularities(const std::vector<Singularity>& a, const std::vector<Singularity>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (a[i].vertex != b[i].vertex || a[i].index != b[i].index) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+SeamlessResult seamless_parameterization(const SimplicialMesh& input,
+                                         const std::optional<FrameFieldInput>& field,
+                                         const SeamlessOptions& options, const Logger& logger) {
+    Stopwatch total, stage;
+    if (input.simplex_dimension() != 2)
+        throw InputError("seamless parameterization needs a triangle mesh");
+    SimplicialMesh mesh = input;
+    if (mesh.vertices.cols() == 2) {
+        mesh.vertices.conservativeResize(Eigen::NoChange, 3);
+        mesh.vertices.col(2).setZero();
+    }
+    const MeshTopology topology = mesh_topology(mesh, "mesh");
+    check_oriented(mesh, topology, "mesh");
+    const RestFrames<2> frames = rest_frames<2>(mesh);
+    const Index nf = mesh.num_simplices();
+    SeamlessResult r;
+
+    // 1. The field.
+    if (field && field->given.empty()) {
+        r.field_source = "file";
+        r.field_before = frame_matrices(frames, field->u, field->v);
+    } else {
+        std::vector<CrossFieldConstraint> constraints;
+        if (field) {
+            for (Index f = 0; f < nf; ++f) {
+                if (field->given[f]) constraints.push_back({f, field->u.row(f).transpose()});
+            }
+        }
+        r.field_source = field ? "cross field interpolating the file's " +
+                                     std::to_string(constraints.size()) + " given faces"
+                               : "smoothest cross field";
+        r.field_before = frame_matrices(frames, smoothest_cross_field(mesh, topology, constraints));
+    }
+    const Eigen::MatrixXd directions = frame_cross_directions(frames, r.field_before);
+    r.singularities_before = cross_field_singularities(mesh, topology, directions);
+    r.times.field = stage.lap();
+
+    // 2. Matchings and the cut.
+    r.matching = cross_field_matchings(mesh, topology, directions);
+    std::vector<Index> through;
+    for (const Singularity& s : r.singularities_before) through.push_back(s.vertex);
+    r.cut = cut_graph(mesh, topology, through);
+    r.cut_edges = std::count(r.cut.begin(), r.cut.end(), 1);
+    r.times.cut = stage.lap();
+
+    double row_norm = 0.0;
+    for (const Mat<2>& A : r.field_before) row_norm += A.row(0).norm() + A.row(1).norm();
+    row_norm /= 2.0 * double(nf);
+    r.scale =
+        options.scale > 0.0
+            ? options.scale
+            : (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm() /
+                  30.0;
+    const double to_jacobian = 1.0 / (row_norm * r.scale);
+    r.curl_before = edge_curl(mesh, topology, frames, r.field_before, r.matching) / row_norm;
+    r.curl_stats_before = curl_stats(r.curl_before);
+
+    // 3. The plain Poisson map of phi, for comparison.
+    r.plain = poisson_verified(mesh, topology, r, r.field_before, to_jacobian);
+    r.times.plain_poisson = stage.lap();
+
+    // 4. phi' by Simplex Assembly.
+    r.integrable = integrable_field(mesh, topology, frames, r.field_before, r.matching,
+                                    options.integrable, logger);
+    r.field_after = r.integrable.matrices;
+    r.times.integrable = stage.lap();
+
+    // 5. Its Poisson map, verified.
+    r.result = poisson_verified(mesh, topology, r, r.field_after, to_jacobian);
+    r.times.poisson = stage.lap();
+    r.curl_after = edge_curl(mesh, topology, frames, r.field_after, r.matching) / row_norm;
+    r.curl_stats_after = curl_stats(r.curl_after);
+    r.singularities_after = cone_singularities(mesh, topology, r.result.map, r.cone_deviation);
+    r.singularities_kept = same_singularities(r.singularities_before, r.singularities_after) &&
+                           r.cone_deviation <= options.cone_tolerance;
+    r.matchings_kept =
+        cross_field_matchings(mesh, topology, frame_cross_directions(frames, r.field_after)) ==
+        r.matching;
+    const MapQuality& q = r.result.quality;
+    const double mismatch = r.result.map.max_seam_mismatch;
+    r.success = r.integrable.assembled && q.inverted == 0 && q.degenerate == 0 &&
+                mismatch <= options.seam_tolerance && r.singularities_kept;
+    r.times.verification = stage.lap();
+    r.times.total = total.seconds();
+
+    std::ostringstream m;
+    m << (r.success ? "success: " : "FAILED: ") << "verified from the (u, v) of the " << q.simplices
+      << " faces: " << q.inverted << " inverted, " << q.degenerate
+      << " degenerate, largest seam mismatch " << mismatch << " (tolerance "
+      << options.seam_tolerance << "), " << r.singularities_after.size()
+      << " cone points measured from the (u, v) angle sums "
+      << (r.singularities_kept
+              ? "(the field's singularities"
+              : "(NOT the field's " + std::to_string(r.singularities_before.size()) +
+                    " singularities")
+      << ", angle sums within " << r.cone_deviation << " rad of quarter turns)"
+      << "; edge curl max " << r.curl_stats_before.max << " -> " << r.curl_stats_after.max
+      << (r.integrable.assembled ? "" : " (not assembled)") << "; the plain Poisson map of the "
+      << "input field has " << r.plain.quality.inverted << " inverted faces.";
+    r.message = m.str();
+    return r;
+}
+
+}  // namespace sa
