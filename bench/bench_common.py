@@ -30,6 +30,16 @@ def run_measured(command, timeout):
         return None
 
 
+def check_uv(checker, mesh, out):
+    """The JSON of `check_map.py --rest mesh --result out --uv`, or dict(ok=False, error=...)."""
+    c = subprocess.run([sys.executable, checker, '--rest', mesh, '--result', out, '--uv'],
+                       capture_output=True, text=True)
+    try:
+        return json.loads(c.stdout)
+    except json.JSONDecodeError:
+        return dict(ok=False, error=(c.stdout + c.stderr).strip())
+
+
 def fmt(x, digits=3):
     if x is None:
         return '-'

@@ -16,23 +16,13 @@ With --write, the tables replace the section between <!-- param-benchmarks:begin
 import argparse
 import json
 import os
-import subprocess
 import sys
 import tempfile
 
-from bench_common import fmt, run_measured, write_section
+from bench_common import check_uv, fmt, run_measured, write_section
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
-
-
-def check(a, mesh, out):
-    c = subprocess.run([sys.executable, a.checker, '--rest', mesh, '--result', out, '--uv'],
-                       capture_output=True, text=True)
-    try:
-        return json.loads(c.stdout)
-    except json.JSONDecodeError:
-        return dict(ok=False, error=(c.stdout + c.stderr).strip())
 
 
 def run_param(a, mesh, args, work, name):
@@ -57,7 +47,7 @@ def run_param(a, mesh, args, work, name):
     row['reached'] = par['reached_bound']
     row['rounds'] = len(par['bound_rounds'])
     row['mode'] = rep.get('mode', '-')
-    chk = check(a, mesh, out)
+    chk = check_uv(a.checker, mesh, out)
     row['check'] = chk
     row['status'] = 'verified' if chk.get('ok') else 'NOT verified'
     if chk.get('ok') != par['success']:

@@ -20,11 +20,10 @@ import argparse
 import json
 import math
 import os
-import subprocess
 import sys
 import tempfile
 
-from bench_common import fmt, run_measured, write_section
+from bench_common import check_uv, fmt, run_measured, write_section
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
@@ -118,15 +117,6 @@ def seams_and_cones(F, VT, FT):
     return worst, cones
 
 
-def check(a, mesh, out):
-    c = subprocess.run([sys.executable, a.checker, '--rest', mesh, '--result', out, '--uv'],
-                       capture_output=True, text=True)
-    try:
-        return json.loads(c.stdout)
-    except json.JSONDecodeError:
-        return dict(ok=False, error=(c.stdout + c.stderr).strip())
-
-
 def run_case(a, work, name, mesh, args):
     stem = name.replace('/', '-')
     out = os.path.join(work, stem + '.obj')
@@ -148,7 +138,7 @@ def run_case(a, work, name, mesh, args):
                curl_before=rep['curl_before']['max'], curl_after=rep['curl_after']['max'],
                plain=rep['plain_poisson']['quality']['inverted'], source=rep['field_source'],
                iterations=len(rep['integrable']['iterations']) - 1 if rep['integrable']['iterations'] else 0)
-    chk = check(a, mesh, out)
+    chk = check_uv(a.checker, mesh, out)
     _, VT, F, FT = read_obj(out)
     mismatch, cones = seams_and_cones(F, VT, FT)
     expected = {s['vertex']: s['index'] for s in rep['singularities_before']}
@@ -170,7 +160,7 @@ def miq_row(a, work):
     FUV = [[int(x) for x in row] for row in read_dmat(os.path.join(folder, '3holes-miq-FUV.dmat'))]
     out = os.path.join(work, '3holes-miq.obj')
     write_obj(out, V, F, UV, FUV)
-    chk = check(a, os.path.join(a.data, 'surfaces', '3holes.off'), out)
+    chk = check_uv(a.checker, os.path.join(a.data, 'surfaces', '3holes.off'), out)
     mismatch, cones = seams_and_cones(F, UV, FUV)
     return dict(name='3holes: libigl MIQ (published UV)', faces=len(F), ours=chk.get('inverted'),
                 mismatch=mismatch, cones=len(cones), status='checked' if 'inverted' in chk else

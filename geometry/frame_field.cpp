@@ -50,6 +50,16 @@ std::vector<Mat<2>> frame_matrices(const RestFrames<2>& frames, const Eigen::Mat
     return matrices;
 }
 
+std::pair<Eigen::MatrixXd, Eigen::MatrixXd> frame_vectors(const RestFrames<2>& frames,
+                                                          const std::vector<Mat<2>>& matrices) {
+    Eigen::MatrixXd u(frames.size(), 3), v(frames.size(), 3);
+    for (Index f = 0; f < frames.size(); ++f) {
+        u.row(f) = (frames.axes[f] * matrices[f].row(0).transpose()).transpose();
+        v.row(f) = (frames.axes[f] * matrices[f].row(1).transpose()).transpose();
+    }
+    return {u, v};
+}
+
 Eigen::MatrixXd frame_cross_directions(const RestFrames<2>& frames,
                                        const std::vector<Mat<2>>& matrices) {
     Eigen::MatrixXd directions(frames.size(), 3);

@@ -30,6 +30,10 @@ namespace sa {
 std::vector<Mat<2>> frame_matrices(const RestFrames<2>& frames, const Eigen::MatrixXd& u,
                                    const Eigen::MatrixXd& v = {});
 
+/// The inverse of frame_matrices: the rows of each A_f as vectors in space, #F x 3 each.
+std::pair<Eigen::MatrixXd, Eigen::MatrixXd> frame_vectors(const RestFrames<2>& frames,
+                                                          const std::vector<Mat<2>>& matrices);
+
 /// #F x 3: per face the first direction of the closest rotation to A_f, in space: the cross
 /// that the frame field carries (for singularities and matchings, cross_field.h, cut_graph.h).
 Eigen::MatrixXd frame_cross_directions(const RestFrames<2>& frames,

@@ -9,6 +9,7 @@
 #include "frontends/output/map_output.h"
 #include "frontends/output/map_report.h"
 #include "frontends/seamless/seamless_parameterization.h"
+#include "geometry/frame_field.h"
 #include "geometry/io/frame_field_io.h"
 #include "geometry/io/mesh_file.h"
 #include "geometry/io/obj_io.h"
@@ -33,17 +34,6 @@ Eigen::VectorXd face_curl(const MeshTopology& topology, Index faces, const Eigen
     return out;
 }
 
-/// The rows of A_f as vectors in space (#F x 3 each).
-std::pair<Eigen::MatrixXd, Eigen::MatrixXd> field_vectors(const RestFrames<2>& frames,
-                                                          const std::vector<Mat<2>>& field) {
-    Eigen::MatrixXd u(frames.size(), 3), v(frames.size(), 3);
-    for (Index f = 0; f < frames.size(); ++f) {
-        u.row(f) = (frames.axes[f] * field[f].row(0).transpose()).transpose();
-        v.row(f) = (frames.axes[f] * field[f].row(1).transpose()).transpose();
-    }
-    return {u, v};
-}
-
 /// The cut mesh in space with (u, v), the fields, curls and distortion: for ParaView.
 void write_seamless_vtu(const std::string& path, const SimplicialMesh& mesh,
                         const SeamlessResult& r) {
@@ -65,8 +55,8 @@ void write_seamless_vtu(const std::string& path, const SimplicialMesh& mesh,
     }
     const MeshTopology topology = mesh_topology(surface, path);
     const RestFrames<2> frames = rest_frames<2>(surface);
-    const auto [u_before, v_before] = field_vectors(frames, r.field_before);
-    const auto [u_after, v_after] = field_vectors(frames, r.field_after);
+    const auto [u_before, v_before] = frame_vectors(frames, r.field_before);
+    const auto [u_after, v_after] = frame_vectors(frames, r.field_after);
     std::vector<DataArray> cells = quality_cell_data(r.result.quality);
     cells.push_back({"field_u", u_after});
     cells.push_back({"field_v", v_after});

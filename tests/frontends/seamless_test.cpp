@@ -12,16 +12,10 @@
 namespace sa {
 namespace {
 
-/// The rows of per-face 2 x 2 matrices as vectors in space (the inverse of frame_matrices).
+/// A per-face field given as vectors in space, as a file would give it.
 FrameFieldInput as_vectors(const RestFrames<2>& frames, const std::vector<Mat<2>>& matrices) {
-    FrameFieldInput field;
-    field.u.resize(frames.size(), 3);
-    field.v.resize(frames.size(), 3);
-    for (Index f = 0; f < frames.size(); ++f) {
-        field.u.row(f) = (frames.axes[f] * matrices[f].row(0).transpose()).transpose();
-        field.v.row(f) = (frames.axes[f] * matrices[f].row(1).transpose()).transpose();
-    }
-    return field;
+    const auto [u, v] = frame_vectors(frames, matrices);
+    return {u, v, {}};
 }
 
 TEST(Seamless, AFieldFromAKnownParameterizationComesBackUpToScale) {

@@ -13,6 +13,7 @@
 namespace sa {
 namespace {
 
+using test::binary_dmat;
 using test::TempFolder;
 using test::throws_input_error;
 using test::throws_invalid_argument;
@@ -26,22 +27,6 @@ TEST(DmatIo, ReadsColumnByColumn) {
     EXPECT_EQ(matrix, expected);
     EXPECT_EQ(read_dmat(folder.write("empty.dmat", "0 0\n")).size(), 0);
     EXPECT_EQ(read_dmat(folder.write("rows.dmat", "0 4\n")).rows(), 4);
-}
-
-// A binary .dmat: `0 0`, `cols rows`, then little-endian doubles column by column, then `extra`.
-std::string binary_dmat(const Eigen::MatrixXd& matrix, const std::string& extra = "") {
-    std::string bytes =
-        "0 0\n" + std::to_string(matrix.cols()) + " " + std::to_string(matrix.rows()) + "\n";
-    for (Eigen::Index j = 0; j < matrix.cols(); ++j) {
-        for (Eigen::Index i = 0; i < matrix.rows(); ++i) {
-            const double value = matrix(i, j);
-            std::uint64_t bits = 0;
-            std::memcpy(&bits, &value, sizeof bits);
-            for (int b = 0; b < 8; ++b)
-                bytes.push_back(static_cast<char>((bits >> (8 * b)) & 0xff));
-        }
-    }
-    return bytes + extra;
 }
 
 TEST(DmatIo, ReadsBinary) {

@@ -14,25 +14,10 @@
 namespace sa {
 namespace {
 
+using test::binary_dmat;
 using test::TempFolder;
 using test::throws_input_error;
 using Flags = std::vector<unsigned char>;
-
-// A binary .dmat of `matrix`: `0 0`, `cols rows`, then little-endian doubles column by column.
-std::string binary_dmat(const Eigen::MatrixXd& matrix) {
-    std::string bytes =
-        "0 0\n" + std::to_string(matrix.cols()) + " " + std::to_string(matrix.rows()) + "\n";
-    for (Eigen::Index j = 0; j < matrix.cols(); ++j) {
-        for (Eigen::Index i = 0; i < matrix.rows(); ++i) {
-            const double value = matrix(i, j);
-            std::uint64_t bits = 0;
-            std::memcpy(&bits, &value, sizeof bits);
-            for (int b = 0; b < 8; ++b)
-                bytes.push_back(static_cast<char>((bits >> (8 * b)) & 0xff));
-        }
-    }
-    return bytes;
-}
 
 // Writes `matrix` as an ASCII .dmat named `name` and returns its path.
 std::string write_ascii(const TempFolder& folder, const std::string& name,

@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 #include <unistd.h>
+#include <Eigen/Core>
 
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
@@ -118,6 +121,24 @@ void check_atomic_writes(const TempFolder& folder, const std::string& name, Writ
     write(path);
     EXPECT_NE(read_all(path), "old content");
     EXPECT_EQ(folder.entries(), entries);
+}
+
+inline  // A binary .dmat: `0 0`, `cols rows`, then little-endian doubles column by column, then
+        // `extra`.
+    std::string
+    binary_dmat(const Eigen::MatrixXd& matrix, const std::string& extra = "") {
+    std::string bytes =
+        "0 0\n" + std::to_string(matrix.cols()) + " " + std::to_string(matrix.rows()) + "\n";
+    for (Eigen::Index j = 0; j < matrix.cols(); ++j) {
+        for (Eigen::Index i = 0; i < matrix.rows(); ++i) {
+            const double value = matrix(i, j);
+            std::uint64_t bits = 0;
+            std::memcpy(&bits, &value, sizeof bits);
+            for (int b = 0; b < 8; ++b)
+                bytes.push_back(static_cast<char>((bits >> (8 * b)) & 0xff));
+        }
+    }
+    return bytes + extra;
 }
 
 }  // namespace sa::test
