@@ -14,7 +14,7 @@ packages=(
     libgtest-dev libgmock-dev libbenchmark-dev
     libcli11-dev nlohmann-json3-dev
     libcairo2-dev
-    xvfb xauth
+    libx11-dev xvfb xauth
 )
 
 missing=()

@@ -1,12 +1,5 @@
 #include "frontends/output/checkerboard_picture.h"
 
-#include <fcntl.h>
-#include <poll.h>
-#include <signal.h>
-#include <sys/prctl.h>
-#include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
@@ -14,7 +7,6 @@
 #include <vtkImageData.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
-#include <vtkOutputWindow.h>
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -32,30 +24,19 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <cerrno>
-#include <chrono>
 #include <cmath>
-#include <cstdlib>
-#include <memory>
 #include <mutex>
 #include <numeric>
-#include <optional>
-#include <thread>
 #include <vector>
 
+#include "frontends/output/x_display.h"
 #include "geometry/io/atomic_file.h"
+#include "geometry/io/vtk_capture.h"
 #include "optim/errors.h"
-
-// Last: Xlib defines macros (None, Status, Bool) that other headers may use as names.
-#include <X11/Xlib.h>
 
 namespace sa {
 
 namespace {
-
-const char* const kNoDisplay =
-    "write_checkerboard_png: no X display to render on: set DISPLAY, or install xvfb "
-    "(scripts/setup.sh installs it) so that a private Xvfb can be started";
 
 // ---- Checking the input ----------------------------------------------------------------------
 
@@ -279,180 +260,9 @@ void fit_camera(vtkRenderer* renderer, const Eigen::MatrixXd& points, double asp
     renderer->ResetCameraClippingRange();
 }
 
-// ---- The display -------------------------------------------------------------------------------
+// ---- Rendering ------------------------------------------------------------------------------
 
-/// The full path of an executable `name` on PATH, or "" when there is none.
-std::string find_on_path(const std::string& name) {
-    const char* path = std::getenv("PATH");
-    const std::string dirs = path ? path : "";
-    std::size_t start = 0;
-    while (start <= dirs.size()) {
-        std::size_t end = dirs.find(':', start);
-        if (end == std::string::npos) end = dirs.size();
-        const std::string dir = end > start ? dirs.substr(start, end - start) : ".";
-        const std::string candidate = dir + "/" + name;
-        struct stat info;
-        if (stat(candidate.c_str(), &info) == 0 && S_ISREG(info.st_mode) &&
-            access(candidate.c_str(), X_OK) == 0) {
-            return candidate;
-        }
-        start = end + 1;
-    }
-    return "";
-}
-
-/// A private X server: `Xvfb` on a display number it picks, for the lifetime of the object.
-class PrivateXServer {
-  public:
-    PrivateXServer(int width, int height) {
-        const std::string xvfb = find_on_path("Xvfb");
-        if (xvfb.empty()) throw InputError(kNoDisplay);
-        int fds[2];
-        if (pipe2(fds, O_CLOEXEC) != 0) {
-            throw InputError("write_checkerboard_png: cannot start Xvfb (no pipe)");
-        }
-        // Everything the child needs is prepared here: between fork and exec only
-        // async-signal-safe calls.
-        const std::string fd = std::to_string(fds[1]);
-        const std::string screen = std::to_string(width) + "x" + std::to_string(height) + "x24";
-        const char* argv[] = {"Xvfb",         "-displayfd", fd.c_str(), "-screen", "0",
-                              screen.c_str(), "-nolisten",  "tcp",      nullptr};
-        const int null = open("/dev/null", O_RDWR | O_CLOEXEC);
-        const pid_t parent = getpid();
-        pid_ = fork();
-        if (pid_ == 0) {
-            // Die with the calling thread should this process be killed before cleaning up.
-            prctl(PR_SET_PDEATHSIG, SIGTERM);
-            if (getppid() != parent) _exit(127);
-            if (null > 2) {
-                dup2(null, 0);
-                dup2(null, 1);
-                dup2(null, 2);
-            }
-            fcntl(fds[1], F_SETFD, 0);  // the one descriptor Xvfb inherits
-            sigset_t none;
-            sigemptyset(&none);
-            sigprocmask(SIG_SETMASK, &none, nullptr);
-            execv(xvfb.c_str(), const_cast<char* const*>(argv));
-            _exit(127);
-        }
-        if (null >= 0) close(null);
-        close(fds[1]);
-        if (pid_ < 0) {
-            close(fds[0]);
-            throw InputError("write_checkerboard_png: cannot start Xvfb (fork failed)");
-        }
-        // Xvfb writes its display number and a newline once it accepts connections.
-        std::string number;
-        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-        while (number.empty() || number.back() != '\n') {
-            const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-                deadline - std::chrono::steady_clock::now());
-            if (left.count() <= 0) break;
-            pollfd p{fds[0], POLLIN, 0};
-            const int ready = poll(&p, 1, static_cast<int>(left.count()));
-            if (ready < 0 && errno == EINTR) continue;
-            if (ready <= 0) break;
-            char buffer[32];
-            const ssize_t got = read(fds[0], buffer, sizeof buffer);
-            if (got < 0 && errno == EINTR) continue;
-            if (got <= 0) break;  // Xvfb exited
-            number.append(buffer, static_cast<std::size_t>(got));
-        }
-        close(fds[0]);
-        if (number.size() < 2 || number.back() != '\n' ||
-            number.find_first_not_of("0123456789\n") != std::string::npos) {
-            stop();
-            throw InputError("write_checkerboard_png: " + xvfb +
-                             " did not start; set DISPLAY to an X server instead");
-        }
-        number.pop_back();
-        display_.push_back(':');  // not ":" + number: GCC 12 warns falsely (-Wrestrict)
-        display_.append(number);
-    }
-
-    ~PrivateXServer() { stop(); }
-    PrivateXServer(const PrivateXServer&) = delete;
-    PrivateXServer& operator=(const PrivateXServer&) = delete;
-
-    const std::string& display() const { return display_; }
-
-  private:
-    /// SIGTERM, up to 5 s to exit, then SIGKILL; always reaped.
-    void stop() {
-        if (pid_ <= 0) return;
-        kill(pid_, SIGTERM);
-        for (int i = 0; i < 500; ++i) {
-            const pid_t done = waitpid(pid_, nullptr, WNOHANG);
-            if (done == pid_ || (done < 0 && errno != EINTR)) {
-                pid_ = -1;
-                return;
-            }
-            std::this_thread::sleep_for(std::chrono::milliseconds(10));
-        }
-        kill(pid_, SIGKILL);
-        while (waitpid(pid_, nullptr, 0) < 0 && errno == EINTR) {
-        }
-        pid_ = -1;
-    }
-
-    pid_t pid_ = -1;
-    std::string display_;
-};
-
-struct DisplayCloser {
-    void operator()(Display* display) const { XCloseDisplay(display); }
-};
-using DisplayConnection = std::unique_ptr<Display, DisplayCloser>;
-
-/// A connection to an X server with GLX, or null.
-DisplayConnection open_display(const char* name) {
-    DisplayConnection display(XOpenDisplay(name));
-    int opcode = 0, event = 0, error = 0;
-    if (display && !XQueryExtension(display.get(), "GLX", &opcode, &event, &error)) {
-        display.reset();
-    }
-    return display;
-}
-
-/// Collects VTK's messages instead of printing them.
-class CatchingOutputWindow : public vtkOutputWindow {
-  public:
-    vtkTypeMacro(CatchingOutputWindow, vtkOutputWindow) static CatchingOutputWindow* New() {
-        auto* window = new CatchingOutputWindow;
-        window->InitializeObjectBase();
-        return window;
-    }
-    void DisplayText(const char* text) override {
-        if (text && messages.size() < 16) messages.emplace_back(text);
-    }
-    /// The first message on one line, or "".
-    std::string first() const {
-        if (messages.empty()) return "";
-        std::string line = messages.front();
-        std::replace(line.begin(), line.end(), '\n', ' ');
-        while (!line.empty() && line.back() == ' ') line.pop_back();
-        return line;
-    }
-    std::vector<std::string> messages;
-};
-
-/// Installs a CatchingOutputWindow as VTK's output window for its lifetime.
-class CatchVtkMessages {
-  public:
-    CatchVtkMessages() : previous_(vtkOutputWindow::GetInstance()) {
-        vtkOutputWindow::SetInstance(catcher_);
-    }
-    ~CatchVtkMessages() { vtkOutputWindow::SetInstance(previous_); }
-    CatchVtkMessages(const CatchVtkMessages&) = delete;
-    CatchVtkMessages& operator=(const CatchVtkMessages&) = delete;
-    const CatchingOutputWindow& messages() const { return *catcher_; }
-
-  private:
-    vtkSmartPointer<vtkOutputWindow> previous_;
-    vtkNew<CatchingOutputWindow> catcher_;
-};
-
+// Serializes the calls (see checkerboard_picture.h).
 std::mutex& render_mutex() {
     static std::mutex mutex;
     return mutex;
@@ -542,27 +352,16 @@ void write_checkerboard_png(const std::string& path, const Eigen::MatrixXd& posi
     const vtkSmartPointer<vtkPolyData> surface = make_surface(points, faces, uv);
 
     std::lock_guard<std::mutex> lock(render_mutex());
-    CatchVtkMessages caught;
+    VtkCapture caught;
     vtkSmartPointer<vtkImageData> image;
     {
-        // Declared in this order so that the connection closes before the server stops.
-        std::optional<PrivateXServer> server;
-        const char* name = std::getenv("DISPLAY");
-        DisplayConnection display = name && *name ? open_display(nullptr) : nullptr;
-        if (!display) {
-            server.emplace(picture.width, picture.height);
-            display = open_display(server->display().c_str());
-            if (!display) {
-                throw InputError("write_checkerboard_png: cannot connect to the private Xvfb on " +
-                                 server->display() + " (or it has no GLX)");
-            }
-        }
+        const XDisplay display(picture.width, picture.height, "write_checkerboard_png");
         image = render(display.get(), points, surface, picture);
     }
     int dims[3];
     image->GetDimensions(dims);
     if (dims[0] != picture.width || dims[1] != picture.height) {
-        const std::string why = caught.messages().first();
+        const std::string why = caught.first_message();
         throw InputError("write_checkerboard_png: rendering gave a " + std::to_string(dims[0]) +
                          " x " + std::to_string(dims[1]) + " picture instead of " +
                          std::to_string(picture.width) + " x " + std::to_string(picture.height) +
@@ -575,7 +374,7 @@ void write_checkerboard_png(const std::string& path, const Eigen::MatrixXd& posi
     writer->SetInputData(image);
     writer->Write();
     if (writer->GetErrorCode() != 0) {
-        const std::string why = caught.messages().first();
+        const std::string why = caught.first_message();
         throw InputError(path + ": cannot write the picture" +
                          (why.empty() ? "" : " (" + why + ")"));
     }

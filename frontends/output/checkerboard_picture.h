@@ -5,14 +5,12 @@
 // across which the squares line up. Rendered with VTK (OpenGL): smooth shading under a
 // headlight, the camera fitted to the mesh from an oblique view, the title at the top.
 //
-// Display: VTK on Debian renders through X11 (GLX) even off screen. When DISPLAY names an X
-// server that can be opened and has GLX, the picture is rendered there, off screen (no window
-// appears). Otherwise (DISPLAY unset, empty or unusable) a private `Xvfb` found on PATH is
-// started for the duration of the call (`Xvfb -displayfd <fd> -screen 0 WxHx24 -nolisten tcp`,
-// its output discarded) and terminated and reaped before returning, also when an exception is
-// thrown. With neither a display nor Xvfb, InputError. Calls are serialized by a process-wide
-// lock. Nothing is printed: VTK's messages during the call are caught, and reported in the
-// exception when the picture cannot be made.
+// Display: rendered off screen (no window appears) on DISPLAY when it is usable, otherwise on a
+// private Xvfb started for the duration of the call and stopped before returning, also when an
+// exception is thrown (XDisplay, frontends/output/x_display.h). With neither a display nor Xvfb,
+// InputError. Calls are serialized by a process-wide lock. Nothing is printed: VTK's messages
+// during the call are captured (VtkCapture, geometry/io/vtk_capture.h), and the first one is
+// reported in the exception when the picture cannot be made.
 
 #include <Eigen/Core>
 #include <array>

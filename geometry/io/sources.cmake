@@ -12,6 +12,7 @@ set(SA_GEOMETRY_IO_SOURCES
     io/problem_io.cpp
     io/tetgen_io.cpp
     io/text_reader.cpp
+    io/vtk_capture.cpp
     io/vtk_io.cpp
     io/write_checks.cpp
 )

@@ -8,9 +8,6 @@
 #include <vtkDoubleArray.h>
 #include <vtkIdList.h>
 #include <vtkIntArray.h>
-#include <vtkLogger.h>
-#include <vtkObjectFactory.h>
-#include <vtkOutputWindow.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -22,85 +19,18 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
-#include <mutex>
 #include <set>
 #include <sstream>
 #include <string>
 
 #include "geometry/io/atomic_file.h"
 #include "geometry/io/text_reader.h"
+#include "geometry/io/vtk_capture.h"
 #include "geometry/io/write_checks.h"
 #include "optim/errors.h"
 
 namespace sa {
 namespace {
-
-// An output window that keeps the first error instead of printing it.
-class CollectingOutputWindow : public vtkOutputWindow {
-  public:
-    static CollectingOutputWindow* New();
-    // No vtkTypeMacro: it ends with its own ';', which clang-format and -Wpedantic disagree on,
-    // and nothing here needs the class's VTK type name.
-    void DisplayText(const char* text) override {
-        if (GetCurrentMessageType() == MESSAGE_TYPE_ERROR && error.empty())
-            error = clean(text != nullptr ? text : "");
-    }
-
-    std::string error;
-
-  private:
-    // VTK's text is "ERROR: In FILE, line N\nvtkClass (0x...): message\n\n": keep the message.
-    static std::string clean(const std::string& text) {
-        std::istringstream in(text);
-        for (std::string line; std::getline(in, line);) {
-            if (line.rfind("ERROR: In ", 0) == 0 || line.rfind("Warning: In ", 0) == 0 ||
-                line.rfind("Generic Warning: In ", 0) == 0)
-                continue;
-            while (!line.empty() && (line.back() == ' ' || line.back() == '\r')) line.pop_back();
-            if (line.empty()) continue;
-            const std::size_t prefix = line.find("): ");
-            if (line.rfind("vtk", 0) == 0 && prefix != std::string::npos)
-                line = line.substr(prefix + 3);
-            return line;
-        }
-        return "unknown VTK error";
-    }
-};
-vtkStandardNewMacro(CollectingOutputWindow);
-
-// VTK's output window is global: one capture at a time.
-std::mutex& capture_mutex() {
-    static std::mutex mutex;
-    return mutex;
-}
-
-// Routes VTK's messages to a CollectingOutputWindow while alive and silences its logger's stderr.
-class VtkCapture {
-  public:
-    VtkCapture() : lock_(capture_mutex()) {
-        previous_ = vtkOutputWindow::GetInstance();
-        window_ = vtkSmartPointer<CollectingOutputWindow>::New();
-        vtkOutputWindow::SetInstance(window_);
-        // vtkLogger has no getter for its stderr verbosity; without other log sinks, the cutoff
-        // is that verbosity.
-        verbosity_ = vtkLogger::GetCurrentVerbosityCutoff();
-        vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-    }
-    ~VtkCapture() {
-        vtkOutputWindow::SetInstance(previous_);
-        vtkLogger::SetStderrVerbosity(verbosity_);
-    }
-    VtkCapture(const VtkCapture&) = delete;
-    VtkCapture& operator=(const VtkCapture&) = delete;
-
-    const std::string& error() const { return window_->error; }
-
-  private:
-    std::lock_guard<std::mutex> lock_;
-    vtkSmartPointer<vtkOutputWindow> previous_;
-    vtkSmartPointer<CollectingOutputWindow> window_;
-    vtkLogger::Verbosity verbosity_ = vtkLogger::VERBOSITY_WARNING;
-};
 
 std::string cell_type_name(int type) {
     const char* name = vtkCellTypes::GetClassNameFromTypeId(type);

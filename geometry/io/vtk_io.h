@@ -10,7 +10,8 @@
 // data; .vtu by VTK, binary appended (VTK's default, zlib-compressed).
 //
 // VTK reports problems through its global output window; these functions capture that text while
-// they run (nothing is printed) and turn errors into exceptions.
+// they run (VtkCapture, geometry/io/vtk_capture.h: nothing is printed) and turn errors into
+// exceptions.
 
 #include <Eigen/Core>
 #include <string>
