@@ -73,6 +73,12 @@ Eigen::MatrixXd frame_cross_directions(const RestFrames<2>& frames,
     return directions;
 }
 
+double mean_row_norm(const std::vector<Mat<2>>& matrices) {
+    double sum = 0.0;
+    for (const Mat<2>& A : matrices) sum += A.row(0).norm() + A.row(1).norm();
+    return sum / (2.0 * double(matrices.size()));
+}
+
 Mat<2> quarter_turns(int k) {
     const int m = ((k % 4) + 4) % 4;
     const double c = m == 0 ? 1.0 : m == 2 ? -1.0 : 0.0, s = m == 1 ? 1.0 : m == 3 ? -1.0 : 0.0;

@@ -39,6 +39,9 @@ std::pair<Eigen::MatrixXd, Eigen::MatrixXd> frame_vectors(const RestFrames<2>& f
 Eigen::MatrixXd frame_cross_directions(const RestFrames<2>& frames,
                                        const std::vector<Mat<2>>& matrices);
 
+/// The mean length of the rows of the matrices: the field's size.
+double mean_row_norm(const std::vector<Mat<2>>& matrices);
+
 /// The rotation by k quarter turns (counter-clockwise).
 Mat<2> quarter_turns(int k);
 

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 
 #include "frontends/cli/cli_support.h"
 #include "frontends/output/checkerboard_picture.h"
@@ -25,15 +26,6 @@ std::string with_extension(const std::string& path, const std::string& ext) {
     return std::filesystem::path(path).replace_extension(ext).string();
 }
 
-/// Per face: the largest relative curl over its interior edges.
-Eigen::VectorXd face_curl(const MeshTopology& topology, Index faces, const Eigen::VectorXd& curl) {
-    Eigen::VectorXd out = Eigen::VectorXd::Zero(faces);
-    for (std::size_t i = 0; i < topology.interior_facets.size(); ++i) {
-        for (Index f : topology.interior_facets[i].simplex) out[f] = std::max(out[f], curl[i]);
-    }
-    return out;
-}
-
 /// The cut mesh in space with (u, v), the fields, curls and distortion: for ParaView.
 void write_seamless_vtu(const std::string& path, const SimplicialMesh& mesh,
                         const SeamlessResult& r) {
@@ -48,13 +40,7 @@ void write_seamless_vtu(const std::string& path, const SimplicialMesh& mesh,
     std::vector<double> index(mesh.num_vertices(), 0.0);
     for (const Singularity& s : r.singularities_after) index[s.vertex] = s.index;
     for (Index c = 0; c < nc; ++c) singularity(c, 0) = index[cut.original_vertex[c]];
-    SimplicialMesh surface = mesh;
-    if (surface.vertices.cols() == 2) {
-        surface.vertices.conservativeResize(Eigen::NoChange, 3);
-        surface.vertices.col(2).setZero();
-    }
-    const MeshTopology topology = mesh_topology(surface, path);
-    const RestFrames<2> frames = rest_frames<2>(surface);
+    const RestFrames<2> frames = rest_frames<2>(r.surface);
     const auto [u_before, v_before] = frame_vectors(frames, r.field_before);
     const auto [u_after, v_after] = frame_vectors(frames, r.field_after);
     std::vector<DataArray> cells = quality_cell_data(r.result.quality);
@@ -62,8 +48,8 @@ void write_seamless_vtu(const std::string& path, const SimplicialMesh& mesh,
     cells.push_back({"field_v", v_after});
     cells.push_back({"input_field_u", u_before});
     cells.push_back({"input_field_v", v_before});
-    cells.push_back({"curl_before", face_curl(topology, nf, r.curl_before)});
-    cells.push_back({"curl_after", face_curl(topology, nf, r.curl_after)});
+    cells.push_back({"curl_before", r.face_curl_before});
+    cells.push_back({"curl_after", r.face_curl_after});
     Eigen::MatrixXd turns(nf, 1);
     for (Index f = 0; f < nf; ++f) turns(f, 0) = r.result.map.chart_turns[f];
     cells.push_back({"chart_quarter_turns", turns, true});
@@ -239,25 +225,24 @@ int run_seamless_command(const SeamlessArguments& a) {
             {"peak_memory_gb", peak_memory_gb()}};
         write_json(a.report, report);
     }
-    std::string singular;
+    std::ostringstream singular;  // the first few, "vertex (index)"
     for (std::size_t i = 0; i < r.singularities_before.size() && i < 8; ++i) {
-        singular += (i ? ", " : "") + std::to_string(r.singularities_before[i].vertex) + " (" +
-                    std::to_string(r.singularities_before[i].index).substr(0, 5) + ")";
+        singular << (i ? ", " : " at vertices ") << r.singularities_before[i].vertex << " ("
+                 << r.singularities_before[i].index << ")";
     }
-    if (r.singularities_before.size() > 8) singular += ", ...";
+    if (r.singularities_before.size() > 8) singular << ", ...";
     char line[768];
     std::snprintf(line, sizeof line,
-                  "  field: %s; %zu singularities%s%s%s, %ld cut edges\n"
+                  "  field: %s; %zu singularities%s, %ld cut edges\n"
                   "  edge curl (relative): max %.3g mean %.3g -> max %.3g mean %.3g "
                   "(%d Simplex Assembly iterations)\n"
                   "  Poisson map of the input field: %ld foldovers; ours: %ld foldovers, seam "
                   "mismatch %.3g, conformal distortion max %.4g mean %.4g\n"
                   "  time %.2f s (read %.2f, field %.2f, Simplex Assembly %.2f, Poisson %.2f, "
                   "output %.2f); peak memory %.2f GB\n",
-                  r.field_source.c_str(), r.singularities_before.size(),
-                  singular.empty() ? "" : " at vertices ", singular.c_str(), "", long(r.cut_edges),
-                  r.curl_stats_before.max, r.curl_stats_before.mean, r.curl_stats_after.max,
-                  r.curl_stats_after.mean, r.integrable.newton.num_steps(),
+                  r.field_source.c_str(), r.singularities_before.size(), singular.str().c_str(),
+                  long(r.cut_edges), r.curl_stats_before.max, r.curl_stats_before.mean,
+                  r.curl_stats_after.max, r.curl_stats_after.mean, r.integrable.newton.num_steps(),
                   long(r.plain.quality.inverted), long(r.result.quality.inverted),
                   r.result.map.max_seam_mismatch, r.result.quality.conformal.max,
                   r.result.quality.conformal.mean, total.seconds(), read_time, r.times.field,

@@ -21,12 +21,9 @@ IntegrableField integrable_field(const SimplicialMesh& mesh, const MeshTopology&
         throw InvalidArgumentError(
             "integrable_field: expected one frame per face and one matching per interior edge");
     }
-    double row_norm = 0.0, area = 0.0;
-    for (Index f = 0; f < nf; ++f) {
-        row_norm += phi[f].row(0).norm() + phi[f].row(1).norm();
-        area += frames.volume[f];
-    }
-    const double scale = 2.0 * double(nf) / row_norm;
+    double area = 0.0;
+    for (Index f = 0; f < nf; ++f) area += frames.volume[f];
+    const double scale = 1.0 / mean_row_norm(phi);
     std::vector<Mat<2>> reference(nf);
     std::vector<double> weights(nf);
     Eigen::VectorXd x(4 * nf);

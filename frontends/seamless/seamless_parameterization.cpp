@@ -13,24 +13,14 @@ namespace sa {
 
 namespace {
 
-/// Throws InputError unless every interior edge is traversed in opposite directions by its faces.
-void check_oriented(const SimplicialMesh& mesh, const MeshTopology& topology,
-                    const std::string& source) {
-    auto forward = [&](Index f, Index a, Index b) {
-        for (int k = 0; k < 3; ++k) {
-            if (mesh.simplices(f, k) == a && mesh.simplices(f, (k + 1) % 3) == b) return true;
-        }
-        return false;
-    };
-    for (const InteriorFacet& facet : topology.interior_facets) {
-        const Index a = facet.vertices[0], b = facet.vertices[1];
-        if (forward(facet.simplex[0], a, b) == forward(facet.simplex[1], a, b)) {
-            throw InputError(source + ": faces " + std::to_string(facet.simplex[0]) + " and " +
-                             std::to_string(facet.simplex[1]) +
-                             " are oriented inconsistently across the edge " + std::to_string(a) +
-                             "-" + std::to_string(b));
-        }
+/// Per face, the largest of the curls of its interior edges.
+Eigen::VectorXd largest_per_face(const MeshTopology& topology, Index faces,
+                                 const Eigen::VectorXd& curl) {
+    Eigen::VectorXd out = Eigen::VectorXd::Zero(faces);
+    for (std::size_t i = 0; i < topology.interior_facets.size(); ++i) {
+        for (Index f : topology.interior_facets[i].simplex) out[f] = std::max(out[f], curl[i]);
     }
+    return out;
 }
 
 CurlStats curl_stats(const Eigen::VectorXd& curl) {
@@ -95,16 +85,17 @@ SeamlessResult seamless_parameterization(const SimplicialMesh& input,
     Stopwatch total, stage;
     if (input.simplex_dimension() != 2)
         throw InputError("seamless parameterization needs a triangle mesh");
-    SimplicialMesh mesh = input;
-    if (mesh.vertices.cols() == 2) {
-        mesh.vertices.conservativeResize(Eigen::NoChange, 3);
-        mesh.vertices.col(2).setZero();
+    SeamlessResult r;
+    r.surface = input;
+    if (r.surface.vertices.cols() == 2) {
+        r.surface.vertices.conservativeResize(Eigen::NoChange, 3);
+        r.surface.vertices.col(2).setZero();
     }
+    const SimplicialMesh& mesh = r.surface;
+    // Also rejects a non-manifold or inconsistently oriented surface.
     const MeshTopology topology = mesh_topology(mesh, "mesh");
-    check_oriented(mesh, topology, "mesh");
     const RestFrames<2> frames = rest_frames<2>(mesh);
     const Index nf = mesh.num_simplices();
-    SeamlessResult r;
 
     // 1. The field.
     if (field && field->given.empty()) {
@@ -134,17 +125,17 @@ SeamlessResult seamless_parameterization(const SimplicialMesh& input,
     r.cut_edges = std::count(r.cut.begin(), r.cut.end(), 1);
     r.times.cut = stage.lap();
 
-    double row_norm = 0.0;
-    for (const Mat<2>& A : r.field_before) row_norm += A.row(0).norm() + A.row(1).norm();
-    row_norm /= 2.0 * double(nf);
+    const double row_norm = mean_row_norm(r.field_before);
     r.scale =
         options.scale > 0.0
             ? options.scale
             : (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm() /
                   30.0;
     const double to_jacobian = 1.0 / (row_norm * r.scale);
-    r.curl_before = edge_curl(mesh, topology, frames, r.field_before, r.matching) / row_norm;
-    r.curl_stats_before = curl_stats(r.curl_before);
+    const Eigen::VectorXd curl_before =
+        edge_curl(mesh, topology, frames, r.field_before, r.matching) / row_norm;
+    r.curl_stats_before = curl_stats(curl_before);
+    r.face_curl_before = largest_per_face(topology, nf, curl_before);
 
     // 3. The plain Poisson map of phi, for comparison.
     r.plain = poisson_verified(mesh, topology, r, r.field_before, to_jacobian);
@@ -159,8 +150,10 @@ SeamlessResult seamless_parameterization(const SimplicialMesh& input,
     // 5. Its Poisson map, verified.
     r.result = poisson_verified(mesh, topology, r, r.field_after, to_jacobian);
     r.times.poisson = stage.lap();
-    r.curl_after = edge_curl(mesh, topology, frames, r.field_after, r.matching) / row_norm;
-    r.curl_stats_after = curl_stats(r.curl_after);
+    const Eigen::VectorXd curl_after =
+        edge_curl(mesh, topology, frames, r.field_after, r.matching) / row_norm;
+    r.curl_stats_after = curl_stats(curl_after);
+    r.face_curl_after = largest_per_face(topology, nf, curl_after);
     r.singularities_after = cone_singularities(mesh, topology, r.result.map, r.cone_deviation);
     r.singularities_kept = same_singularities(r.singularities_before, r.singularities_after) &&
                            r.cone_deviation <= options.cone_tolerance;

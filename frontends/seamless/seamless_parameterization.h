@@ -60,6 +60,7 @@ struct VerifiedSeamlessMap {
 };
 
 struct SeamlessResult {
+    SimplicialMesh surface;    ///< the input mesh in space (a planar one with z = 0 added)
     std::string field_source;  ///< "file", "smoothest cross field" or "constrained cross field"
     double scale = 0.0;        ///< H used
     std::vector<Mat<2>> field_before, field_after;  ///< phi and phi' per face (rest frames)
@@ -74,7 +75,8 @@ struct SeamlessResult {
     std::vector<int> matching;
     std::vector<unsigned char> cut;  ///< per interior facet
     Index cut_edges = 0;
-    Eigen::VectorXd curl_before, curl_after;  ///< per interior facet, relative
+    /// Per face, the largest relative curl of its interior edges.
+    Eigen::VectorXd face_curl_before, face_curl_after;
     CurlStats curl_stats_before, curl_stats_after;
     VerifiedSeamlessMap plain;   ///< Poisson of phi
     VerifiedSeamlessMap result;  ///< Poisson of phi'
