@@ -1,5 +1,6 @@
 #include "geometry/disassembly.h"
 
+#include <tbb/parallel_for.h>
 #include <Eigen/LU>
 #include <Eigen/SVD>
 #include <algorithm>
@@ -77,21 +78,21 @@ void project_linear_parts(std::vector<Mat<D>>& A, Initialization init, std::uint
             return;
         }
         case Initialization::kClosestRotation:
-            for (Mat<D>& a : A) {
-                a = a.allFinite() ? closest_rotation<D>(a) : Mat<D>(Mat<D>::Identity());
-            }
+            tbb::parallel_for(std::size_t(0), A.size(), [&](std::size_t i) {
+                A[i] = A[i].allFinite() ? closest_rotation<D>(A[i]) : Mat<D>(Mat<D>::Identity());
+            });
             return;
         case Initialization::kClosestSimilarity: {
             std::vector<Mat<D>> rotations(A.size());
             std::vector<double> scales(A.size());
-            for (std::size_t i = 0; i < A.size(); ++i) {
+            tbb::parallel_for(std::size_t(0), A.size(), [&](std::size_t i) {
                 if (A[i].allFinite()) {
                     std::tie(rotations[i], scales[i]) = signed_polar<D>(A[i]);
                 } else {
                     rotations[i].setIdentity();
                     scales[i] = std::nan("");
                 }
-            }
+            });
             std::vector<double> finite;
             for (double s : scales) {
                 if (std::isfinite(s) && s > 0.0) finite.push_back(s);

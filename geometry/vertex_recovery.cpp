@@ -68,11 +68,9 @@ Eigen::MatrixXd VertexRecovery<D>::recover(const std::vector<Mat<D>>& A,
             }
         }
     }
-    for (int c = 0; c < D; ++c) {
-        const Eigen::VectorXd x = solver_->solve(rhs.col(c));
-        for (Index v = 0; v < mesh_.num_vertices(); ++v) {
-            if (free_index_[v] >= 0) result(v, c) = x[free_index_[v]];
-        }
+    const Eigen::MatrixXd x = solver_->solve_columns(rhs);
+    for (Index v = 0; v < mesh_.num_vertices(); ++v) {
+        if (free_index_[v] >= 0) result.row(v) = x.row(free_index_[v]);
     }
     return result;
 }

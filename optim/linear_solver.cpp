@@ -181,6 +181,20 @@ Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& rhs) const {
     return {};
 }
 
+Eigen::MatrixXd LinearSolver::solve_columns(const Eigen::MatrixXd& rhs) const {
+    switch (impl_->type) {
+        case LinearSolverType::kCholmodSupernodal:
+            return impl_->supernodal->solve(rhs);
+        case LinearSolverType::kCholmodSimplicial:
+            return impl_->simplicial->solve(rhs);
+        case LinearSolverType::kEigenLDLT:
+            return impl_->ldlt->solve(rhs);
+        case LinearSolverType::kAuto:
+            break;
+    }
+    return {};
+}
+
 LinearSolverType LinearSolver::active_type() const {
     return impl_->type;
 }

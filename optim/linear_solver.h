@@ -55,6 +55,8 @@ class LinearSolver {
     FactorizationStatus factorize(const Eigen::SparseMatrix<double>& lower);
     /// Solves with the last successful factorization.
     Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
+    /// The same for several right-hand sides at once (one column each; level-3 BLAS).
+    Eigen::MatrixXd solve_columns(const Eigen::MatrixXd& rhs) const;
 
     /// The factorization actually in use (differs from the requested one after a fallback).
     LinearSolverType active_type() const;

@@ -86,6 +86,8 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
         report["submesh"] = {
             {"start", m.start},
             {"start_bad", m.start_bad},
+            {"start_iterations", m.start_iterations},
+            {"start_rejected", m.start_rejected},
             {"rounds", rounds},
             {"solves", m.solves},
             {"iterations", m.iterations},

@@ -96,8 +96,10 @@ struct SubmeshRound {
 };
 
 struct SubmeshStats {
-    std::string start;    ///< "recovered (Eq. 6)" or "initial map"
-    Index start_bad = 0;  ///< bad simplices of the start
+    std::string start;         ///< which iterate of the start ("initial map", "M^0 (Eq. 6)", ...)
+    int start_iterations = 0;  ///< local/global iterations run after M^0
+    int start_rejected = 0;    ///< accelerated points among them replaced by plain steps
+    Index start_bad = 0;       ///< bad simplices of the start
     std::vector<SubmeshRound> rounds;
     Index solves = 0;           ///< submesh solves, retries included
     Index iterations = 0;       ///< Newton steps summed over them

@@ -102,10 +102,11 @@ struct SimplexAssemblyOptions {
     int rings = 4;       ///< m: rings of simplices around the bad ones
     int max_rings = 20;  ///< m_max: a region that fails grows by 2 rings up to this
     int max_rounds = 2;  ///< l_max: rounds after the first
-    /// Local/global iterations (the disassembly's projection, then Eq. 6) that make the
-    /// submesh mode's start; the first is the paper's M^0, more are ARAP (rotations) or ASAP
-    /// (similarities) iterations. The iterate with the fewest bad simplices is kept.
-    int start_iterations = 30;
+    /// Most local/global iterations after the paper's M^0 in the submesh mode's start:
+    /// Anderson-accelerated ARAP (rotations) or ASAP (similarities) iterations, which spread
+    /// large handle motions (frontends/simplex_assembly/submesh_start.h); 0 = start from the
+    /// initial map itself. The iterate with the fewest bad simplices is kept.
+    int start_iterations = 500;
     /// kAuto takes the full solve for meshes of at most this many triangles or tetrahedra (a
     /// tetrahedron's 9 variables couple with its 4 neighbours: the full 3D system costs far more),
     /// and for meshes whose initial map has more than `auto_bad_share` inverted or degenerate

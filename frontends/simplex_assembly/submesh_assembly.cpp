@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "energies/distortion.h"
+#include "frontends/simplex_assembly/submesh_start.h"
 #include "frontends/simplex_assembly/vertex_stage.h"
 #include "geometry/disassembly.h"
 #include "geometry/submesh.h"
@@ -17,21 +18,11 @@ namespace sa {
 
 namespace {
 
-/// Simplices of `positions` (original units) that the barrier rejects: inverted, at or over the
-/// bound, or so distorted that E_C overflows; and degenerate ones.
+/// bad_simplices() of `positions` (original units).
 template <int D>
-std::vector<Index> bad_simplices(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions) {
-    const std::vector<Mat<D>> A =
-        linear_parts<D>(p.mesh, p.frames, (positions.rowwise() - p.map_center) * p.scale);
-    const MapQuality q = map_quality<D>(A, p.frames.volume);
-    std::vector<Index> bad;
-    for (Index s = 0; s < p.mesh.num_simplices(); ++s) {
-        if (q.per_simplex[s].degenerate ||
-            !std::isfinite(p.energy->value(s, Eigen::Map<const Vec<D * D>>(A[s].data())))) {
-            bad.push_back(s);
-        }
-    }
-    return bad;
+std::vector<Index> bad_simplices_at(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions) {
+    return bad_simplices<D>(
+        p, linear_parts<D>(p.mesh, p.frames, (positions.rowwise() - p.map_center) * p.scale));
 }
 
 struct Region {
@@ -93,36 +84,25 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
     const int threads = options.num_threads > 0 ? options.num_threads : default_thread_count();
     tbb::task_arena arena(threads);
 
-    // The start: the initial map (handles at their targets), then local/global iterations (the
-    // paper's M^0 is the first: each A_i projected as in the disassembly, vertices by Eq. 6; more
-    // of them are ARAP or ASAP iterations, which spread large handle motions). Keep the iterate
-    // with the fewest bad simplices.
-    Eigen::MatrixXd current = p.start;
-    for (std::size_t k = 0; k < input.handles.size(); ++k)
-        current.row(input.handles[k]) = p.assembly.targets[k].transpose();
-    Eigen::MatrixXd positions = p.to_original(current);
-    std::vector<Index> bad = bad_simplices<D>(p, positions);
-    stats.start = "initial map";
-    for (int iteration = 1; iteration <= options.start_iterations && !bad.empty(); ++iteration) {
-        std::vector<Mat<D>> A = linear_parts<D>(p.mesh, p.frames, current);
-        project_linear_parts<D>(A, options.effective_initialization(), options.seed);
-        current = p.recovery().recover(A, p.pinned);
-        const Eigen::MatrixXd candidate = p.to_original(current);
-        std::vector<Index> candidate_bad = bad_simplices<D>(p, candidate);
-        if (candidate_bad.size() < bad.size()) {
-            positions = candidate;
-            bad.swap(candidate_bad);
-            stats.start = "local/global iteration " + std::to_string(iteration);
-        }
-    }
+    SubmeshStart start = submesh_start<D>(p, options);
+    Eigen::MatrixXd positions = std::move(start.positions);
+    std::vector<Index> bad = std::move(start.bad);
+    stats.start = start.description;
+    stats.start_iterations = start.iterations;
+    stats.start_rejected = start.rejected;
     stats.start_bad = static_cast<Index>(bad.size());
     stats.start_time = stage.lap();
     std::vector<unsigned char> is_handle(input.mesh.num_vertices(), 0);
     for (Index h : input.handles) is_handle[h] = 1;
-    std::vector<unsigned char> repaired(input.mesh.num_vertices(), 0);  // in a solved region
+    // Vertices the solve moved: every one when the start came from Eq. 6, then those of the
+    // solved regions.
+    std::vector<unsigned char> repaired(input.mesh.num_vertices(), start.recovered ? 1 : 0);
     char line[320];
-    std::snprintf(line, sizeof line, "submesh mode: start from the %s, %ld bad simplices of %ld",
-                  stats.start.c_str(), long(bad.size()), long(p.mesh.num_simplices()));
+    std::snprintf(line, sizeof line,
+                  "submesh mode: start from the %s, %ld bad simplices of %ld (%d local/global "
+                  "iterations, %.2f s)",
+                  stats.start.c_str(), long(bad.size()), long(p.mesh.num_simplices()),
+                  stats.start_iterations, stats.start_time);
     log_line(observer.logger, line);
 
     for (int round = 0; !bad.empty() && round <= options.max_rounds; ++round) {
@@ -225,7 +205,7 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
             stats.solve_time += round_watch.lap();
             pending.swap(retry);
         }
-        bad = bad_simplices<D>(p, positions);
+        bad = bad_simplices_at<D>(p, positions);
         record.remaining = static_cast<Index>(bad.size());
         record.time = round_watch.seconds();
         stats.region_time += round_watch.lap();
@@ -238,12 +218,12 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
         stats.rounds.push_back(record);
     }
     result.assembled = bad.empty();
-    // The repaired mesh is valid: finish with the vertex stage on the repaired regions (their
-    // vertices, region boundaries included, move; the rest of the mesh stays as it was, as in
+    // The repaired mesh is valid: finish with the vertex stage on the vertices the start and the
+    // regions moved (region boundaries included; the rest of the mesh stays as it was, as in
     // section 4.4). It lowers the distortion there and never leaves the valid set.
     const bool any_repaired = std::find(repaired.begin(), repaired.end(), 1) != repaired.end();
     if (options.vertex_stage && !options.until_valid && bad.empty() && !any_repaired) {
-        result.vertex_stage_note = "skipped: no region was repaired";
+        result.vertex_stage_note = "skipped: the initial map was valid and nothing moved";
     } else if (options.vertex_stage && !options.until_valid && bad.empty()) {
         Stopwatch vertex_watch;
         std::vector<unsigned char> fixed(p.mesh.num_vertices(), 0);

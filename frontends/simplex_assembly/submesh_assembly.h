@@ -2,9 +2,9 @@
 // The submesh strategy of section 4.4 ("Speedup"), and the choice between it and the full solve.
 //
 // Round l = 0, 1, ..., l_max:
-//   1. positions: for l = 0 the best of the initial map and up to `start_iterations` local/global
-//      iterations from it (the first is the paper's M^0: the disassembled linear parts, Eq. 6;
-//      the next ones are ARAP or ASAP iterations); then the result of the previous round;
+//   1. positions: for l = 0 the start of submesh_start.h (the initial map, the paper's M^0, or an
+//      accelerated ARAP or ASAP iterate from it, whichever has the fewest bad simplices); then
+//      the result of the previous round;
 //   2. bad simplices: those the barrier rejects (inverted, at or over the bound, or so distorted
 //      that E_C overflows) and degenerate ones;
 //      none: done;

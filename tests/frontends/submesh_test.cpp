@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+#include <cmath>
+#include <cstring>
+
 #include "frontends/simplex_assembly/simplex_assembly.h"
 #include "geometry/mesh_generators.h"
 #include "geometry/mesh_topology.h"
@@ -66,6 +70,51 @@ TEST(SubmeshMode, SameOutputOnOneAndTwoThreads) {
         std::memcmp(a.positions.data(), b.positions.data(), sizeof(double) * a.positions.size()),
         0);
     EXPECT_EQ(a.submesh.solves, b.submesh.solves);
+}
+
+// A bar whose top face is turned by 120 degrees about its axis, the bottom fixed: only the
+// tetrahedra under the top face fold, but a valid map has to twist the whole bar. The
+// accelerated ARAP iterations of the start do that before any submesh is solved.
+TEST(SubmeshMode, TheStartSpreadsALargeHandleRotation) {
+    MappingProblem p;
+    p.mesh = grid_tetrahedra(3, 3, 12);
+    p.initial = p.mesh.vertices;
+    const double top = p.mesh.vertices.col(2).maxCoeff();
+    const Eigen::Matrix3d turn =
+        Eigen::AngleAxisd(2.0 * M_PI / 3.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    const Eigen::RowVector3d axis(0.125, 0.125, 0.0);  // the bar is [0, 0.25]^2 x [0, 1]
+    for (Index v = 0; v < p.mesh.num_vertices(); ++v) {
+        const double z = p.mesh.vertices(v, 2);
+        if (z == 0.0 || z == top) p.handles.push_back(v);
+        if (z == top) {
+            p.initial.row(v) =
+                (turn * (p.mesh.vertices.row(v) - axis).transpose()).transpose() + axis;
+        }
+    }
+    SimplexAssemblyOptions options;
+    options.mode = SolveMode::kSubmesh;
+    options.distortion = DistortionType::kIsometric;
+    options.num_threads = 1;
+    const SimplexAssemblyResult a = run_simplex_assembly(p, options);
+    EXPECT_GT(a.initial_quality.inverted, 0);
+    ASSERT_TRUE(a.success) << a.message;
+    EXPECT_EQ(a.submesh.start_bad, 0) << a.submesh.describe();
+    EXPECT_EQ(a.submesh.start.rfind("ARAP iteration", 0), 0u) << a.submesh.start;
+    EXPECT_EQ(a.submesh.solves, 0);
+    EXPECT_TRUE(a.vertex_stage_ran) << a.vertex_stage_note;  // the start moved every vertex
+
+    options.num_threads = 2;
+    const SimplexAssemblyResult b = run_simplex_assembly(p, options);
+    ASSERT_EQ(a.positions.size(), b.positions.size());
+    EXPECT_EQ(
+        std::memcmp(a.positions.data(), b.positions.data(), sizeof(double) * a.positions.size()),
+        0);
+
+    options.until_valid = true;  // stops at the first valid iterate, no vertex stage
+    const SimplexAssemblyResult c = run_simplex_assembly(p, options);
+    ASSERT_TRUE(c.success) << c.message;
+    EXPECT_LE(c.submesh.start_iterations, a.submesh.start_iterations);
+    EXPECT_FALSE(c.vertex_stage_ran);
 }
 
 TEST(SubmeshMode, AutoPicksFullForSmallMeshesAndSubmeshesForLargeOnes) {

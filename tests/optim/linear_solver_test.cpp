@@ -34,7 +34,15 @@ TEST_P(LinearSolverTest, SolvesAPositiveDefiniteSystem) {
     const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 1.0);
     const Eigen::VectorXd x = solver.solve(b);
     EXPECT_LT((full * x - b).norm() / b.norm(), 1e-10);
-    if (GetParam() != LinearSolverType::kAuto) EXPECT_EQ(solver.active_type(), GetParam());
+    if (GetParam() != LinearSolverType::kAuto) {
+        EXPECT_EQ(solver.active_type(), GetParam());
+    }
+    Eigen::MatrixXd B(n, 3);
+    B << b, b.cwiseAbs(), Eigen::VectorXd::Ones(n);
+    const Eigen::MatrixXd X = solver.solve_columns(B);
+    ASSERT_EQ(X.cols(), 3);
+    EXPECT_LT((full * X - B).norm() / B.norm(), 1e-10);
+    EXPECT_LT((X.col(0) - x).norm(), 1e-12 * x.norm());
 }
 
 TEST_P(LinearSolverTest, ReportsAnIndefiniteMatrix) {

@@ -1,0 +1,124 @@
+#include "frontends/simplex_assembly/submesh_start.h"
+
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+
+#include "geometry/arap_local_step.h"
+#include "geometry/disassembly.h"
+#include "geometry/map_quality.h"
+#include "optim/anderson_acceleration.h"
+
+namespace sa {
+
+namespace {
+
+/// Differences kept by the Anderson acceleration (Peng et al. use 5 to 10).
+constexpr int kAndersonHistory = 6;
+
+Eigen::VectorXd flatten(const Eigen::MatrixXd& m) {
+    return Eigen::Map<const Eigen::VectorXd>(m.data(), m.size());
+}
+
+Eigen::MatrixXd unflatten(const Eigen::VectorXd& v, Index rows) {
+    return Eigen::Map<const Eigen::MatrixXd>(v.data(), rows, v.size() / rows);
+}
+
+}  // namespace
+
+template <int D>
+std::vector<Index> bad_simplices(const PreparedProblem<D>& p, const std::vector<Mat<D>>& A) {
+    const Index n = static_cast<Index>(A.size());
+    std::vector<double> det_volume(n);
+    std::vector<unsigned char> rejected(n, 0);
+    tbb::parallel_for(Index(0), n, [&](Index s) {
+        const double det = A[s].determinant();
+        det_volume[s] = std::abs(det) * p.frames.volume[s];
+        rejected[s] = !std::isfinite(det) ||
+                      !std::isfinite(p.energy->value(s, Eigen::Map<const Vec<D * D>>(A[s].data())));
+    });
+    double largest = 0.0;
+    for (double v : det_volume) {
+        if (std::isfinite(v)) largest = std::max(largest, v);
+    }
+    std::vector<Index> bad;
+    for (Index s = 0; s < n; ++s) {
+        if (rejected[s] || det_volume[s] <= 1e-14 * largest) bad.push_back(s);
+    }
+    return bad;
+}
+
+template <int D>
+SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& options) {
+    const MappingProblem& input = *p.input;
+    const Index rows = p.mesh.num_vertices();
+    SubmeshStart start;
+    Eigen::MatrixXd x = p.start;  // normalized
+    for (std::size_t k = 0; k < input.handles.size(); ++k)
+        x.row(input.handles[k]) = p.assembly.targets[k].transpose();
+    std::vector<Mat<D>> A = linear_parts<D>(p.mesh, p.frames, x);
+    start.positions = p.to_original(x);
+    start.bad = bad_simplices<D>(p, A);
+    start.description = "initial map";
+    // Fewer bad simplices win; with as few, the later iterate (lower Q) wins, except when only
+    // a valid map is asked for.
+    auto keep_if_better = [&](const Eigen::MatrixXd& candidate, const std::vector<Mat<D>>& parts,
+                              const std::string& description) {
+        std::vector<Index> bad = bad_simplices<D>(p, parts);
+        const bool fewer = bad.size() < start.bad.size();
+        if (!fewer && (bad.size() > start.bad.size() || options.until_valid)) return false;
+        start.positions = p.to_original(candidate);
+        start.bad.swap(bad);
+        start.description = description;
+        start.recovered = true;
+        return fewer;
+    };
+    auto done = [&] { return start.bad.empty() && options.until_valid; };
+    if (start.bad.empty() || options.start_iterations <= 0) return start;
+
+    // M^0.
+    const Initialization projection = options.effective_initialization();
+    project_linear_parts<D>(A, projection, options.seed);
+    x = p.recovery().recover(A, p.pinned);
+    A = linear_parts<D>(p.mesh, p.frames, x);
+    keep_if_better(x, A, "M^0 (Eq. 6)");
+
+    // Accelerated local/global iterations from M^0.
+    const bool similarity = projection == Initialization::kClosestSimilarity;
+    const char* name = similarity ? "ASAP" : "ARAP";
+    AndersonAcceleration anderson(kAndersonHistory);
+    std::vector<Mat<D>> M;
+    double previous = fit_rigid_parts<D>(p.frames, A, similarity, M);
+    Eigen::MatrixXd plain = p.recovery().recover(M, p.pinned);
+    x = unflatten(anderson.next(flatten(x), flatten(plain)), rows);
+    int last_improvement = 0;
+    const int patience = std::max(1, options.start_iterations / 4);
+    for (int iteration = 1; iteration <= options.start_iterations; ++iteration) {
+        start.iterations = iteration;
+        const std::string label = std::string(name) + " iteration " + std::to_string(iteration);
+        A = linear_parts<D>(p.mesh, p.frames, x);
+        if (keep_if_better(x, A, label)) last_improvement = iteration;
+        if (done() || iteration - last_improvement > patience) break;
+        double energy = fit_rigid_parts<D>(p.frames, A, similarity, M);
+        if (!(energy <= previous)) {  // the accelerated point raised Q: take the plain step
+            ++start.rejected;
+            anderson.reset();
+            x = plain;
+            A = linear_parts<D>(p.mesh, p.frames, x);
+            if (keep_if_better(x, A, label)) last_improvement = iteration;
+            if (done()) break;
+            energy = fit_rigid_parts<D>(p.frames, A, similarity, M);
+        }
+        previous = energy;
+        plain = p.recovery().recover(M, p.pinned);
+        x = unflatten(anderson.next(flatten(x), flatten(plain)), rows);
+    }
+    return start;
+}
+
+template std::vector<Index> bad_simplices<2>(const PreparedProblem<2>&, const std::vector<Mat<2>>&);
+template std::vector<Index> bad_simplices<3>(const PreparedProblem<3>&, const std::vector<Mat<3>>&);
+template SubmeshStart submesh_start<2>(PreparedProblem<2>&, const SimplexAssemblyOptions&);
+template SubmeshStart submesh_start<3>(PreparedProblem<3>&, const SimplexAssemblyOptions&);
+
+}  // namespace sa
