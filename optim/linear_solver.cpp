@@ -168,17 +168,7 @@ FactorizationStatus LinearSolver::factorize(const SparseMatrix& lower) {
 }
 
 Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& rhs) const {
-    switch (impl_->type) {
-        case LinearSolverType::kCholmodSupernodal:
-            return impl_->supernodal->solve(rhs);
-        case LinearSolverType::kCholmodSimplicial:
-            return impl_->simplicial->solve(rhs);
-        case LinearSolverType::kEigenLDLT:
-            return impl_->ldlt->solve(rhs);
-        case LinearSolverType::kAuto:
-            break;
-    }
-    return {};
+    return solve_columns(rhs);
 }
 
 Eigen::MatrixXd LinearSolver::solve_columns(const Eigen::MatrixXd& rhs) const {

@@ -9,7 +9,7 @@
 #include "energies/distortion.h"
 #include "frontends/simplex_assembly/submesh_start.h"
 #include "frontends/simplex_assembly/vertex_stage.h"
-#include "geometry/disassembly.h"
+#include "geometry/map_quality.h"
 #include "geometry/submesh.h"
 #include "optim/parallel.h"
 #include "optim/stopwatch.h"
