@@ -8,10 +8,11 @@
 //   2. from M^0, local/global iterations on Eq. 6's least squares Q (geometry/arap_local_step.h):
 //      ARAP (rotations), or ASAP (similarities) when the disassembly projects to similarities.
 //      They spread large handle motions through the mesh, which the initial map leaves to the
-//      simplices next to the handles. Plain iteration creeps (rabbit of ../shared/data/deform:
-//      589 bad tetrahedra after 30 iterations, 89 after 400), so the iterates are Anderson-
-//      accelerated (optim/anderson_acceleration.h); an accelerated point that raises Q is
-//      replaced by the plain step (Q never increases along plain steps).
+//      simplices next to the handles. Plain iteration creeps (rabbit of ../shared/data/deform,
+//      with the disassembly's projection of A_i as the local step: 589 bad tetrahedra after 30
+//      iterations, 89 after 400), so the iterates are Anderson-accelerated
+//      (optim/anderson_acceleration.h); an accelerated point that raises Q is replaced by the plain
+//      step (Q never increases along plain steps).
 // Every iterate is measured; the one with the fewest bad simplices is kept, and among as few the
 // later one (lower Q: ARAP's own distortion measure). The iterations stop after
 // options.start_iterations, or when the fewest has not improved over the last quarter of that
