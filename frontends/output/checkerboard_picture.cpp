@@ -1,4 +1,4 @@
-#include "frontends/output/checkerboard_picture.h"
+#include "frontends/output/picture_plugin.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -343,9 +343,9 @@ vtkSmartPointer<vtkImageData> render(Display* display, const Eigen::MatrixXd& po
 
 }  // namespace
 
-void write_checkerboard_png(const std::string& path, const Eigen::MatrixXd& positions,
-                            const Eigen::MatrixXi& faces, const Eigen::MatrixXd& uv,
-                            const CheckerboardPicture& picture) {
+void write_checkerboard_png_impl(const std::string& path, const Eigen::MatrixXd& positions,
+                                 const Eigen::MatrixXi& faces, const Eigen::MatrixXd& uv,
+                                 const CheckerboardPicture& picture) {
     check_input(positions, faces, uv, picture);
     Eigen::MatrixXd points = Eigen::MatrixXd::Zero(positions.rows(), 3);
     points.leftCols(positions.cols()) = positions;

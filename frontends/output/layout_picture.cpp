@@ -1,4 +1,4 @@
-#include "frontends/output/layout_picture.h"
+#include "frontends/output/picture_plugin.h"
 
 #include <cairo.h>
 
@@ -30,9 +30,10 @@ std::array<double, 3> viridis(double t) {
 
 }  // namespace
 
-void write_layout_png(const std::string& path, const Eigen::MatrixXd& uv,
-                      const Eigen::MatrixXi& faces, const Eigen::VectorXd& values,
-                      const LayoutPicture& picture, const std::vector<unsigned char>& inverted) {
+void write_layout_png_impl(const std::string& path, const Eigen::MatrixXd& uv,
+                           const Eigen::MatrixXi& faces, const Eigen::VectorXd& values,
+                           const LayoutPicture& picture,
+                           const std::vector<unsigned char>& inverted) {
     if (uv.cols() < 2 || faces.cols() != 3 || values.size() != faces.rows()) {
         throw InvalidArgumentError(
             "write_layout_png: expected #V x 2 positions, #F x 3 faces and #F values");

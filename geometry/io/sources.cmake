@@ -1,6 +1,5 @@
 # Sources of geometry/io, included by geometry/CMakeLists.txt.
 set(SA_GEOMETRY_IO_SOURCES
-    io/atomic_file.cpp
     io/dmat_io.cpp
     io/frame_field_io.cpp
     io/index_list_io.cpp
@@ -9,10 +8,15 @@ set(SA_GEOMETRY_IO_SOURCES
     io/obj_io.cpp
     io/off_io.cpp
     io/openmesh_io.cpp
+    io/plugin_library.cpp
     io/problem_io.cpp
     io/tetgen_io.cpp
-    io/text_reader.cpp
-    io/vtk_capture.cpp
     io/vtk_io.cpp
+)
+# Files written atomically, text parsing with file and line, write-side checks: shared by
+# sa_geometry and the plugins.
+set(SA_FILE_SUPPORT_SOURCES
+    io/atomic_file.cpp
+    io/text_reader.cpp
     io/write_checks.cpp
 )

@@ -12,6 +12,10 @@
 // VTK reports problems through its global output window; these functions capture that text while
 // they run (VtkCapture, geometry/io/vtk_capture.h: nothing is printed) and turn errors into
 // exceptions.
+//
+// VTK itself is loaded on the first call: the implementation is the plugin libsa_vtk_io.so
+// (geometry/io/vtk_io_plugin.h, geometry/io/plugin_library.h); a program that reads and writes
+// other formats never loads VTK. Error when the plugin cannot be loaded.
 
 #include <Eigen/Core>
 #include <string>

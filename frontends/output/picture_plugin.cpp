@@ -1,0 +1,7 @@
+#include "frontends/output/picture_plugin.h"
+
+extern "C" const sa::PictureFunctions* sa_picture_functions() {
+    static const sa::PictureFunctions table{sa::write_checkerboard_png_impl,
+                                            sa::write_layout_png_impl};
+    return &table;
+}

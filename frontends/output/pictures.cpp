@@ -1,0 +1,28 @@
+// The public picture functions, forwarded to the plugin libsa_pictures.so (picture_plugin.h).
+#include "frontends/output/picture_plugin.h"
+#include "geometry/io/plugin_library.h"
+
+namespace sa {
+
+namespace {
+
+const PictureFunctions& pictures() {
+    return plugin_table<PictureFunctions>("sa_pictures", "sa_picture_functions",
+                                          "writing PNG pictures");
+}
+
+}  // namespace
+
+void write_checkerboard_png(const std::string& path, const Eigen::MatrixXd& positions,
+                            const Eigen::MatrixXi& faces, const Eigen::MatrixXd& uv,
+                            const CheckerboardPicture& picture) {
+    pictures().write_checkerboard_png(path, positions, faces, uv, picture);
+}
+
+void write_layout_png(const std::string& path, const Eigen::MatrixXd& uv,
+                      const Eigen::MatrixXi& faces, const Eigen::VectorXd& values,
+                      const LayoutPicture& picture, const std::vector<unsigned char>& inverted) {
+    pictures().write_layout_png(path, uv, faces, values, picture, inverted);
+}
+
+}  // namespace sa

@@ -1,0 +1,67 @@
+#include "geometry/io/plugin_library.h"
+
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <vector>
+
+#include "optim/errors.h"
+
+namespace sa {
+
+namespace {
+
+std::filesystem::path executable_folder() {
+    std::error_code error;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
+    return error ? std::filesystem::path() : exe.parent_path();
+}
+
+}  // namespace
+
+void* plugin_symbol(const std::string& name, const std::string& symbol,
+                    const std::string& purpose) {
+    static std::mutex mutex;
+    static std::map<std::string, void*> loaded;  // file name -> handle; never closed
+    const std::string file = "lib" + name + ".so";
+    std::lock_guard<std::mutex> lock(mutex);
+    void*& handle = loaded[file];
+    std::string tried, message;
+    if (handle == nullptr) {
+        std::vector<std::string> candidates;
+        const std::filesystem::path folder = executable_folder();
+        if (!folder.empty()) {
+            candidates.push_back((folder.parent_path() / "lib" / file).string());
+            candidates.push_back((folder / file).string());
+        }
+        candidates.push_back(file);  // the loader's own search
+        for (const std::string& candidate : candidates) {
+            if (candidate != file && !std::filesystem::exists(candidate)) continue;
+            handle = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
+            if (handle != nullptr) break;
+            const char* error = dlerror();
+            message = error != nullptr ? error : "unknown error";
+        }
+        for (std::size_t i = 0; i + 1 < candidates.size(); ++i)
+            tried +=
+                (i > 0 ? ", " : "") + std::filesystem::path(candidates[i]).parent_path().string();
+        if (handle == nullptr) {
+            throw Error("cannot load " + file + ", needed for " + purpose + ": " + message +
+                        " (looked in " + (tried.empty() ? "" : tried + " and ") +
+                        "the loader's search path)");
+        }
+    }
+    dlerror();
+    void* address = dlsym(handle, symbol.c_str());
+    if (address == nullptr) {
+        const char* error = dlerror();
+        throw Error(file + " has no " + symbol + " (needed for " + purpose +
+                    "): " + (error != nullptr ? error : "null symbol"));
+    }
+    return address;
+}
+
+}  // namespace sa

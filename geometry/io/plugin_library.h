@@ -1,0 +1,31 @@
+#pragma once
+// Optional parts of the toolkit that link large libraries (VTK's file formats, VTK's OpenGL
+// rendering, Cairo) live in shared libraries loaded on first use, so that a command that never
+// touches them does not pay for loading them. Linked into `sa`, they made every process start take
+// 64 ms; without them it takes 21 ms (`perf stat -r 10 build/bin/sa --help`), against the 0.1 s a
+// small mapping problem is allowed in all (BENCHMARKS.md).
+//
+// A plugin `lib<name>.so` exports one extern "C" function `symbol` returning a pointer to a
+// table of C++ function pointers (same compiler, same headers: the types cross unchanged, and so
+// do exceptions). It is looked for, in this order, in `<folder of the executable>/../lib/`
+// (build/lib beside build/bin, or an installation's lib/), in the executable's folder, and by the
+// loader's default search (LD_LIBRARY_PATH, the system's folders).
+
+#include <string>
+
+namespace sa {
+
+/// Loads lib<name>.so once per process and returns the address of `symbol` in it. Thread-safe.
+/// Throws Error naming the library, what it is needed for (`purpose`), the folders tried and the
+/// loader's message when the library or the symbol cannot be found.
+void* plugin_symbol(const std::string& name, const std::string& symbol, const std::string& purpose);
+
+/// The table that `symbol` of lib<name>.so returns: `const Table* symbol()`.
+template <class Table>
+const Table& plugin_table(const std::string& name, const std::string& symbol,
+                          const std::string& purpose) {
+    using Entry = const Table* (*)();
+    return *reinterpret_cast<Entry>(plugin_symbol(name, symbol, purpose))();
+}
+
+}  // namespace sa

@@ -1,0 +1,318 @@
+#include "geometry/io/vtk_io_plugin.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCellTypes.h>
+#include <vtkDataSet.h>
+#include <vtkDataSetReader.h>
+#include <vtkDoubleArray.h>
+#include <vtkIdList.h>
+#include <vtkIntArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include <cctype>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "geometry/io/atomic_file.h"
+#include "geometry/io/text_reader.h"
+#include "geometry/io/vtk_capture.h"
+#include "geometry/io/write_checks.h"
+#include "optim/errors.h"
+
+namespace sa {
+namespace {
+
+std::string cell_type_name(int type) {
+    const char* name = vtkCellTypes::GetClassNameFromTypeId(type);
+    return std::to_string(type) + " (" + (name != nullptr ? name : "unknown") + ")";
+}
+
+MeshFile to_mesh_file(const std::string& path, vtkDataSet* data) {
+    MeshFile result;
+    auto& mesh = result.mesh;
+    const vtkIdType num_points = data->GetNumberOfPoints();
+    const vtkIdType num_cells = data->GetNumberOfCells();
+    if (num_points > std::numeric_limits<int>::max() || num_cells > std::numeric_limits<int>::max())
+        throw InputError(path + ": too many points or cells");
+
+    int type = 0;
+    for (vtkIdType c = 0; c < num_cells; ++c) {
+        const int t = data->GetCellType(c);
+        if (c == 0) {
+            if (t != VTK_TRIANGLE && t != VTK_TETRA)
+                throw InputError(path + ": cell 0 has type " + cell_type_name(t) +
+                                 "; only triangles (5) or tetrahedra (10) are supported");
+            type = t;
+        } else if (t != type) {
+            throw InputError(path + ": cell " + std::to_string(c) + " has type " +
+                             cell_type_name(t) + " but cell 0 has type " + cell_type_name(type) +
+                             "; all cells must be triangles (5) or all tetrahedra (10)");
+        }
+    }
+    const int k = type == VTK_TETRA ? 4 : 3;
+
+    bool flat = type == VTK_TRIANGLE;
+    Eigen::MatrixXd points(num_points, 3);
+    for (vtkIdType i = 0; i < num_points; ++i) {
+        double p[3];
+        data->GetPoint(i, p);
+        for (int j = 0; j < 3; ++j) {
+            if (!std::isfinite(p[j]))
+                throw InputError(path + ": point " + std::to_string(i) +
+                                 " has a non-finite coordinate");
+            points(i, j) = p[j];
+        }
+        if (p[2] != 0.0) flat = false;
+    }
+    mesh.vertices = flat ? Eigen::MatrixXd(points.leftCols(2)) : points;
+
+    mesh.simplices.resize(num_cells, k);
+    auto ids = vtkSmartPointer<vtkIdList>::New();
+    for (vtkIdType c = 0; c < num_cells; ++c) {
+        data->GetCellPoints(c, ids);
+        if (ids->GetNumberOfIds() != k)
+            throw InputError(path + ": cell " + std::to_string(c) + " has " +
+                             std::to_string(ids->GetNumberOfIds()) + " points; expected " +
+                             std::to_string(k));
+        for (int j = 0; j < k; ++j) {
+            const vtkIdType v = ids->GetId(j);
+            if (v < 0 || v >= num_points)
+                throw InputError(path + ": cell " + std::to_string(c) + " refers to point " +
+                                 std::to_string(v) + ", out of range [0, " +
+                                 std::to_string(num_points - 1) + "]");
+            mesh.simplices(c, j) = static_cast<int>(v);
+        }
+    }
+    return result;
+}
+
+// Checks a writer's arguments; throws InvalidArgumentError naming `function`.
+void check_arguments(const char* function, const Eigen::MatrixXd& positions,
+                     const Eigen::MatrixXi& simplices, const std::vector<DataArray>& point_data,
+                     const std::vector<DataArray>& cell_data) {
+    io::check_positions(function, positions);
+    io::check_simplices(function, "simplices", simplices, positions.rows());
+    if (simplices.cols() == 4 && positions.cols() != 3)
+        throw InvalidArgumentError(std::string(function) + ": tetrahedra need 3D positions");
+    auto check_arrays = [&](const std::vector<DataArray>& arrays, const char* kind,
+                            Eigen::Index rows) {
+        std::set<std::string> names;
+        for (const DataArray& array : arrays) {
+            const std::string where =
+                std::string(function) + ": " + kind + " array '" + array.name + "'";
+            if (array.name.empty())
+                throw InvalidArgumentError(std::string(function) + ": " + kind +
+                                           " array with an empty name");
+            if (!names.insert(array.name).second)
+                throw InvalidArgumentError(where + " given twice");
+            if (array.values.rows() != rows || array.values.cols() < 1)
+                throw InvalidArgumentError(where + " is " + std::to_string(array.values.rows()) +
+                                           " x " + std::to_string(array.values.cols()) +
+                                           "; expected " + std::to_string(rows) +
+                                           " rows and at least one column");
+            for (Eigen::Index i = 0; i < array.values.rows(); ++i) {
+                for (Eigen::Index j = 0; j < array.values.cols(); ++j) {
+                    const double value = array.values(i, j);
+                    const bool bad = array.integer
+                                         ? !(value == std::floor(value) &&
+                                             std::abs(value) <= std::numeric_limits<int>::max())
+                                         : !std::isfinite(value);
+                    if (bad) {
+                        std::ostringstream message;
+                        message << where << " row " << i << " column " << j << " is " << value
+                                << (array.integer ? ", not an int" : ", not finite");
+                        throw InvalidArgumentError(message.str());
+                    }
+                }
+            }
+        }
+    };
+    check_arrays(point_data, "point data", positions.rows());
+    check_arrays(cell_data, "cell data", simplices.rows());
+}
+
+// The grid to write (the arguments are checked).
+vtkSmartPointer<vtkUnstructuredGrid> make_grid(const Eigen::MatrixXd& positions,
+                                               const Eigen::MatrixXi& simplices,
+                                               const std::vector<DataArray>& point_data,
+                                               const std::vector<DataArray>& cell_data) {
+    auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(positions.rows());
+    for (Eigen::Index i = 0; i < positions.rows(); ++i)
+        points->SetPoint(i, positions(i, 0), positions(i, 1),
+                         positions.cols() == 3 ? positions(i, 2) : 0.0);
+    grid->SetPoints(points);
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    cells->AllocateExact(simplices.rows(), simplices.size());
+    vtkIdType ids[4];
+    for (Eigen::Index e = 0; e < simplices.rows(); ++e) {
+        for (Eigen::Index c = 0; c < simplices.cols(); ++c) ids[c] = simplices(e, c);
+        cells->InsertNextCell(simplices.cols(), ids);
+    }
+    grid->SetCells(simplices.cols() == 4 ? VTK_TETRA : VTK_TRIANGLE, cells);
+
+    auto add_arrays = [](const std::vector<DataArray>& arrays, vtkDataSetAttributes* target) {
+        for (const DataArray& array : arrays) {
+            vtkSmartPointer<vtkDataArray> data;
+            if (array.integer)
+                data = vtkSmartPointer<vtkIntArray>::New();
+            else
+                data = vtkSmartPointer<vtkDoubleArray>::New();
+            data->SetName(array.name.c_str());
+            data->SetNumberOfComponents(static_cast<int>(array.values.cols()));
+            data->SetNumberOfTuples(array.values.rows());
+            for (Eigen::Index i = 0; i < array.values.rows(); ++i)
+                for (Eigen::Index j = 0; j < array.values.cols(); ++j)
+                    data->SetComponent(i, static_cast<int>(j), array.values(i, j));
+            target->AddArray(data);
+        }
+    };
+    add_arrays(point_data, grid->GetPointData());
+    add_arrays(cell_data, grid->GetCellData());
+    return grid;
+}
+
+// An array name for the legacy format: VTK's readers decode `%XX`, and names cannot hold spaces.
+std::string encode_name(const std::string& name) {
+    static const char* kHex = "0123456789ABCDEF";
+    std::string encoded;
+    for (const char c : name) {
+        const auto u = static_cast<unsigned char>(c);
+        if (std::isgraph(u) != 0 && c != '%' && c != '"') {
+            encoded.push_back(c);
+        } else {
+            encoded.push_back('%');
+            encoded.push_back(kHex[u >> 4]);
+            encoded.push_back(kHex[u & 15]);
+        }
+    }
+    return encoded;
+}
+
+void write_legacy_arrays(std::ostream& out, const char* section, Eigen::Index rows,
+                         const std::vector<DataArray>& arrays) {
+    if (arrays.empty()) return;
+    out << section << ' ' << rows << "\nFIELD FieldData " << arrays.size() << '\n';
+    for (const DataArray& array : arrays) {
+        out << encode_name(array.name) << ' ' << array.values.cols() << ' ' << rows << ' '
+            << (array.integer ? "int" : "double") << '\n';
+        for (Eigen::Index i = 0; i < rows; ++i) {
+            for (Eigen::Index j = 0; j < array.values.cols(); ++j) {
+                if (j > 0) out << ' ';
+                if (array.integer)
+                    out << static_cast<int>(array.values(i, j));
+                else
+                    out << array.values(i, j);
+            }
+            out << '\n';
+        }
+    }
+}
+
+MeshFile read_vtk_file(const std::string& path) {
+    io::check_readable(path);
+    auto reader = vtkSmartPointer<vtkDataSetReader>::New();
+    reader->SetFileName(path.c_str());
+    std::string error;
+    {
+        VtkCapture capture;
+        reader->Update();
+        error = capture.error();
+    }
+    if (!error.empty()) throw InputError(path + ": cannot read as legacy VTK (VTK: " + error + ")");
+    vtkDataSet* data = reader->GetOutput();
+    if (data == nullptr) throw InputError(path + ": cannot read as legacy VTK");
+    if (vtkUnstructuredGrid::SafeDownCast(data) == nullptr &&
+        vtkPolyData::SafeDownCast(data) == nullptr)
+        throw InputError(path + ": dataset type " + data->GetClassName() +
+                         "; only UNSTRUCTURED_GRID and POLYDATA are supported");
+    return to_mesh_file(path, data);
+}
+
+MeshFile read_vtu_file(const std::string& path) {
+    io::check_readable(path);
+    auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    reader->SetFileName(path.c_str());
+    std::string error;
+    {
+        VtkCapture capture;
+        reader->Update();
+        error = capture.error();
+    }
+    if (!error.empty()) throw InputError(path + ": cannot read as VTU (VTK: " + error + ")");
+    vtkUnstructuredGrid* grid = reader->GetOutput();
+    if (grid == nullptr) throw InputError(path + ": cannot read as VTU");
+    return to_mesh_file(path, grid);
+}
+
+void write_vtk_file(const std::string& path, const Eigen::MatrixXd& positions,
+                    const Eigen::MatrixXi& simplices, const std::vector<DataArray>& point_data,
+                    const std::vector<DataArray>& cell_data) {
+    check_arguments("write_vtk", positions, simplices, point_data, cell_data);
+    // Written here rather than by vtkUnstructuredGridWriter, whose ASCII output rounds doubles to
+    // 11 significant digits.
+    AtomicFile file(path);
+    std::ostream& out = file.stream();
+    const Eigen::Index n = positions.rows(), m = simplices.rows(), k = simplices.cols();
+    out << "# vtk DataFile Version 4.2\nsimplex-assembly\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+        << "POINTS " << n << " double\n";
+    for (Eigen::Index i = 0; i < n; ++i) {
+        io::write_position(out, positions, i, true);
+        out << '\n';
+    }
+    out << "CELLS " << m << ' ' << m * (k + 1) << '\n';
+    for (Eigen::Index e = 0; e < m; ++e) {
+        out << k;
+        for (Eigen::Index c = 0; c < k; ++c) out << ' ' << simplices(e, c);
+        out << '\n';
+    }
+    out << "CELL_TYPES " << m << '\n';
+    const int type = k == 4 ? VTK_TETRA : VTK_TRIANGLE;
+    for (Eigen::Index e = 0; e < m; ++e) out << type << '\n';
+    write_legacy_arrays(out, "POINT_DATA", n, point_data);
+    write_legacy_arrays(out, "CELL_DATA", m, cell_data);
+    file.commit();
+}
+
+void write_vtu_file(const std::string& path, const Eigen::MatrixXd& positions,
+                    const Eigen::MatrixXi& simplices, const std::vector<DataArray>& point_data,
+                    const std::vector<DataArray>& cell_data) {
+    check_arguments("write_vtu", positions, simplices, point_data, cell_data);
+    auto grid = make_grid(positions, simplices, point_data, cell_data);
+    AtomicFile file(path);
+    auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
+    writer->SetFileName(file.temporary_path().c_str());
+    writer->SetInputData(grid);
+    int ok = 0;
+    std::string error;
+    {
+        VtkCapture capture;
+        ok = writer->Write();
+        error = capture.error();
+    }
+    if (ok != 1 || !error.empty())
+        throw InputError(path + ": cannot write" + (error.empty() ? "" : " (VTK: " + error + ")"));
+    file.commit();
+}
+
+}  // namespace
+
+}  // namespace sa
+
+extern "C" const sa::VtkIoFunctions* sa_vtk_io_functions() {
+    static const sa::VtkIoFunctions table{sa::read_vtk_file, sa::read_vtu_file, sa::write_vtk_file,
+                                          sa::write_vtu_file};
+    return &table;
+}
