@@ -50,6 +50,7 @@ class AffinePointAgreementEnergy {
     static constexpr int kBlock = D * D + D;
     static constexpr int arity = 2 * kBlock;
     static constexpr bool is_quadratic = true;
+    static constexpr bool is_convex = true;  // a sum of squares of linear functions
 
     struct Point {
         Vec<D> in_p;  ///< the shared point in s_p's rest frame
@@ -90,6 +91,7 @@ class AffinePointTargetEnergy {
   public:
     static constexpr int arity = D * D + D;
     static constexpr bool is_quadratic = true;
+    static constexpr bool is_convex = true;  // a sum of squares of linear functions
 
     struct Target {
         Vec<D> point;   ///< u: the handle in the simplex's rest frame

@@ -32,6 +32,7 @@ class EdgeAssemblyEnergy {
   public:
     static constexpr int arity = 2 * D * D;
     static constexpr bool is_quadratic = true;
+    static constexpr bool is_convex = true;  // a sum of squares of linear functions
     static constexpr int kEdges = SharedFacetEdges<D>::kEdges;
 
     explicit EdgeAssemblyEnergy(std::vector<SharedFacetEdges<D>> facets)

@@ -63,6 +63,7 @@ template <int D>
 struct VertexCopyAgreementEnergy {
     static constexpr int arity = 2 * D;
     static constexpr bool is_quadratic = true;
+    static constexpr bool is_convex = true;  // a sum of squares of linear functions
     double value(Index, const Vec<arity>& x) const {
         return (x.template head<D>() - x.template tail<D>()).squaredNorm();
     }
@@ -80,6 +81,7 @@ template <int D>
 struct VertexCopyTargetEnergy {
     static constexpr int arity = D;
     static constexpr bool is_quadratic = true;
+    static constexpr bool is_convex = true;  // a sum of squares of linear functions
     std::vector<Vec<D>> targets;
     double value(Index i, const Vec<D>& x) const { return (x - targets[i]).squaredNorm(); }
     double value_gradient_hessian(Index i, const Vec<D>& x, Vec<D>& g, Mat<D>& h) const {

@@ -209,7 +209,8 @@ HessianAssembler::HessianAssembler(const Problem& problem)
             }
         });
 
-    // Quadratic terms: evaluate, project (negative curvature clamped to zero) and sum once.
+    // Quadratic terms: evaluate, project unless convex (negative curvature clamped to zero) and
+    // sum once.
     const Eigen::VectorXd& x = problem.variables();
     for (TermId t = 0; t < num_terms; ++t) {
         const Term& term = problem.term(t);
@@ -218,7 +219,7 @@ HessianAssembler::HessianAssembler(const Problem& problem)
         std::vector<double> g(std::size_t(term.num_elements()) * N);
         std::vector<double> h(std::size_t(term.num_elements()) * N * N);
         term.evaluate(x, 1.0, g.data(), h.data());
-        term.project(x, h.data(), ProjectionMode::kClamp, 0.0);
+        if (!term.is_convex()) term.project(x, h.data(), ProjectionMode::kClamp, 0.0);
         std::vector<double> dense(nnz, 0.0);
         std::vector<unsigned char> touched(nnz, 0);
         auto this_term = [t](TermId u) { return u == t; };
@@ -276,7 +277,7 @@ HessianAssembler::Evaluation HessianAssembler::evaluate(const Problem& problem,
     times.evaluate += watch.lap();
 
     for (TermId t = 0; t < num_terms; ++t) {
-        if (hessian_offset_[t] < 0) continue;
+        if (hessian_offset_[t] < 0 || problem.term(t).is_convex()) continue;
         result.projected_blocks +=
             problem.term(t).project(x, hessian_slots_.data() + hessian_offset_[t], mode, epsilon);
     }

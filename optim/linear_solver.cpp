@@ -139,6 +139,11 @@ void LinearSolver::analyze(const SparseMatrix& lower) {
     switch (impl_->type) {
         case LinearSolverType::kCholmodSupernodal:
             impl_->supernodal->analyzePattern(lower);
+            if (impl_->requested == LinearSolverType::kAuto &&
+                impl_->supernodal->cholmod().fl < kAutoSupernodalFlops) {
+                impl_->make(LinearSolverType::kEigenLDLT);
+                impl_->ldlt->analyzePattern(lower);
+            }
             break;
         case LinearSolverType::kCholmodSimplicial:
             impl_->simplicial->analyzePattern(lower);

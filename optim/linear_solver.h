@@ -8,7 +8,12 @@
 //   kEigenLDLT           Eigen's SimplicialLDLT (AMD ordering).
 //   kAuto                kEigenLDLT below kAutoSupernodalSize unknowns, where the threads of the
 //                        BLAS and of CHOLMOD cost more than they save (measured: a 3D submesh of
-//                        2,700 unknowns factors twice as fast), kCholmodSupernodal above.
+//                        2,700 unknowns factors twice as fast), and when CHOLMOD's analysis
+//                        counts fewer than kAutoSupernodalFlops for the factorization: the
+//                        supernodes are then too small for BLAS-3 to pay (measured: tlc/param2d,
+//                        8,090 unknowns, 2.1e7 flops: 23 ms supernodal, 7.6 ms LDLT; tlc/stgc-3d,
+//                        16,845 unknowns, 3.6e8 flops: 85 ms and 89 ms); kCholmodSupernodal
+//                        otherwise.
 // The symbolic analysis (fill-reducing ordering) is done by analyze() and reused by every
 // factorize() until analyze() is called again. CHOLMOD's ordering is chosen by FillOrdering:
 //   kBest   CHOLMOD's default: AMD, then METIS when AMD's fill is large, the better kept. Pays off
@@ -32,6 +37,7 @@ std::string to_string(LinearSolverType type);
 LinearSolverType parse_linear_solver(const std::string& name);
 
 inline constexpr long kAutoSupernodalSize = 5000;
+inline constexpr double kAutoSupernodalFlops = 3e8;
 
 enum class FillOrdering { kBest, kAmd };
 

@@ -42,6 +42,8 @@ class Term {
     /// The `arity()` variable indices of element `e`.
     virtual const Index* element_variables(Index e) const = 0;
     virtual bool is_quadratic() const = 0;
+    /// Positive semidefinite Hessian everywhere: never projected (element_energy.h).
+    virtual bool is_convex() const = 0;
     virtual bool has_max_step() const = 0;
 
     /// Unweighted sum of the element values at `x`; +inf as soon as one element is infeasible.
@@ -86,6 +88,7 @@ class EnergyTerm final : public Term {
     Index num_elements() const override { return static_cast<Index>(elements_.size()); }
     const Index* element_variables(Index e) const override { return elements_[e].data(); }
     bool is_quadratic() const override { return is_quadratic_energy<E>(); }
+    bool is_convex() const override { return is_convex_energy<E>(); }
     bool has_max_step() const override { return HasMaxStep<E>; }
 
     double value(const Eigen::VectorXd& x) const override {

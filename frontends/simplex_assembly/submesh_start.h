@@ -2,7 +2,10 @@
 // The submesh mode's start (round 0's positions) and its test for bad simplices. Internal to
 // frontends/simplex_assembly.
 //
-// From the initial map with the handles at their targets:
+// From the initial map with the handles at their targets, unless the regions of options.rings
+// rings around its bad simplices hold no more simplices than the auto mode solves in full
+// (options.auto_full_triangles / auto_full_tetrahedra): local defects, solved as they are.
+// Otherwise:
 //   1. the paper's M^0: each A_i projected as in the disassembly (Initialization), vertices by
 //      Eq. 6 with the handles fixed;
 //   2. from M^0, local/global iterations on Eq. 6's least squares Q (geometry/arap_local_step.h):

@@ -95,6 +95,10 @@ TEST(SubmeshMode, TheStartSpreadsALargeHandleRotation) {
     options.mode = SolveMode::kSubmesh;
     options.distortion = DistortionType::kIsometric;
     options.num_threads = 1;
+    // The bar's 648 tetrahedra are fewer than the auto mode solves in full, so by default the
+    // regions around its folds are solved as they are (checked at the end); a lower limit makes
+    // it a large mesh, whose start runs.
+    options.auto_full_tetrahedra = 100;
     const SimplexAssemblyResult a = run_simplex_assembly(p, options);
     EXPECT_GT(a.initial_quality.inverted, 0);
     ASSERT_TRUE(a.success) << a.message;
@@ -115,6 +119,15 @@ TEST(SubmeshMode, TheStartSpreadsALargeHandleRotation) {
     ASSERT_TRUE(c.success) << c.message;
     EXPECT_LE(c.submesh.start_iterations, a.submesh.start_iterations);
     EXPECT_FALSE(c.vertex_stage_ran);
+
+    options = SimplexAssemblyOptions{};  // small regions: no start, the regions repair the folds
+    options.mode = SolveMode::kSubmesh;
+    options.distortion = DistortionType::kIsometric;
+    const SimplexAssemblyResult d = run_simplex_assembly(p, options);
+    ASSERT_TRUE(d.success) << d.message;
+    EXPECT_EQ(d.submesh.start, "initial map (its regions are small)");
+    EXPECT_EQ(d.submesh.start_iterations, 0);
+    EXPECT_GT(d.submesh.solves, 0);
 }
 
 TEST(SubmeshMode, AutoPicksFullForSmallMeshesAndSubmeshesForLargeOnes) {
