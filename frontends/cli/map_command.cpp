@@ -85,7 +85,8 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
     map->add_option("--max-rounds", a.max_rounds, "submesh mode: rounds after the first (l_max)")
         ->capture_default_str();
     map->add_option("--linear-solver", a.linear_solver,
-                    "auto (Eigen LDL^T below 5000 unknowns, CHOLMOD supernodal above), "
+                    "auto (Eigen LDL^T below 5000 unknowns or 3e8 factorization flops, CHOLMOD "
+                    "supernodal above), "
                     "cholmod-supernodal, cholmod-simplicial or eigen-ldlt")
         ->capture_default_str();
     map->add_option("--projection", a.projection,
