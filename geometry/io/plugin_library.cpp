@@ -1,7 +1,6 @@
 #include "geometry/io/plugin_library.h"
 
 #include <dlfcn.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <map>
@@ -29,8 +28,8 @@ void* plugin_symbol(const std::string& name, const std::string& symbol,
     const std::string file = "lib" + name + ".so";
     std::lock_guard<std::mutex> lock(mutex);
     void*& handle = loaded[file];
-    std::string tried, message;
     if (handle == nullptr) {
+        std::string message;
         std::vector<std::string> candidates;
         const std::filesystem::path folder = executable_folder();
         if (!folder.empty()) {
@@ -45,10 +44,12 @@ void* plugin_symbol(const std::string& name, const std::string& symbol,
             const char* error = dlerror();
             message = error != nullptr ? error : "unknown error";
         }
-        for (std::size_t i = 0; i + 1 < candidates.size(); ++i)
-            tried +=
-                (i > 0 ? ", " : "") + std::filesystem::path(candidates[i]).parent_path().string();
         if (handle == nullptr) {
+            std::string tried;  // the folders, without the last candidate (the loader's search)
+            for (std::size_t i = 0; i + 1 < candidates.size(); ++i) {
+                tried += (i > 0 ? ", " : "") +
+                         std::filesystem::path(candidates[i]).parent_path().string();
+            }
             throw Error("cannot load " + file + ", needed for " + purpose + ": " + message +
                         " (looked in " + (tried.empty() ? "" : tried + " and ") +
                         "the loader's search path)");
