@@ -1,6 +1,7 @@
 #include "optim/hessian_assembler.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -109,28 +110,81 @@ HessianAssembler::HessianAssembler(const Problem& problem)
                               std::int64_t(in.element) * problem.term(in.term).arity() + in.local;
     });
 
-    // Pattern: rows i >= j of column j are the free variables sharing an element with j.
-    auto collect_rows = [&](Index j, std::vector<Index>& rows) {
-        rows.clear();
-        rows.push_back(j);
+    // Quadratic terms: evaluated and projected (unless convex; negative curvature clamped to
+    // zero) once, here; their contributions are summed per entry below.
+    const Eigen::VectorXd& x = problem.variables();
+    std::vector<int> quadratic_index(num_terms, -1);
+    std::vector<std::vector<double>> quadratic_hessians;
+    for (TermId t = 0; t < num_terms; ++t) {
+        const Term& term = problem.term(t);
+        if (!term.is_quadratic()) continue;
+        const std::size_t N = std::size_t(term.arity());
+        std::vector<double> g(std::size_t(term.num_elements()) * N);
+        std::vector<double>& h = quadratic_hessians.emplace_back(g.size() * N);
+        term.evaluate(x, 1.0, g.data(), h.data());
+        if (!term.is_convex()) term.project(x, h.data(), ProjectionMode::kClamp, 0.0);
+        quadratic_index[t] = static_cast<int>(quadratic_parts_.size());
+        quadratic_parts_.push_back({t, {}, {}});
+    }
+    const std::size_t num_quadratic = quadratic_parts_.size();
+
+    // Column passes. Rows i >= j of column j are the free variables sharing an element with j;
+    // `slot[i]` is row i's place in the column being visited, `seen[i]` the visit that last
+    // saw row i (so that no per-column clearing is needed).
+    struct ColumnScratch {
+        std::vector<std::int64_t> seen;
+        std::vector<Index> slot;
+        std::vector<Index> rows;
+        std::vector<std::int64_t> cursor;
+        std::vector<double> quadratic_value;  ///< num_quadratic x column length
+        std::vector<unsigned char> quadratic_touched;
+        std::int64_t visit = 0;
+    };
+    tbb::enumerable_thread_specific<ColumnScratch> scratches([nf] {
+        ColumnScratch c;
+        c.seen.assign(nf, -1);
+        c.slot.assign(nf, 0);
+        return c;
+    });
+    auto collect_rows = [&](Index j, ColumnScratch& c) {
+        const std::int64_t visit = c.visit++;
+        c.rows.clear();
+        c.rows.push_back(j);
+        c.seen[j] = visit;
         for (std::int64_t p = incidence_begin[j]; p < incidence_begin[j + 1]; ++p) {
             const Term& term = problem.term(incidences[p].term);
             const Index* vars = term.element_variables(incidences[p].element);
             for (int r = 0; r < term.arity(); ++r) {
                 const Index i = free_of_variable_[vars[r]];
-                if (i > j) rows.push_back(i);
+                if (i > j && c.seen[i] != visit) {
+                    c.seen[i] = visit;
+                    c.rows.push_back(i);
+                }
             }
         }
-        std::sort(rows.begin(), rows.end());
-        rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
     };
+    // Visits every (element Hessian entry -> place in column j) contribution, in the fixed order
+    // (term, element, local column, local row); c.slot must hold column j's places.
+    auto for_each_contribution = [&](Index j, const ColumnScratch& c, auto&& visit) {
+        for (std::int64_t p = incidence_begin[j]; p < incidence_begin[j + 1]; ++p) {
+            const Incidence& in = incidences[p];
+            const Term& term = problem.term(in.term);
+            const Index* vars = term.element_variables(in.element);
+            for (int r = 0; r < term.arity(); ++r) {
+                const Index i = free_of_variable_[vars[r]];
+                if (i < j) continue;
+                visit(c.slot[i], in, std::int64_t(in.local) * term.arity() + r);
+            }
+        }
+    };
+    // Pass 1: column lengths.
     std::vector<std::int64_t> column_begin(nf + 1, 0);
     tbb::parallel_for(tbb::blocked_range<Index>(0, nf, kColumnGrain),
                       [&](const tbb::blocked_range<Index>& range) {
-                          std::vector<Index> rows;
+                          ColumnScratch& c = scratches.local();
                           for (Index j = range.begin(); j != range.end(); ++j) {
-                              collect_rows(j, rows);
-                              column_begin[j] = static_cast<std::int64_t>(rows.size());
+                              collect_rows(j, c);
+                              column_begin[j] = static_cast<std::int64_t>(c.rows.size());
                           }
                       });
     counts_to_offsets(column_begin);
@@ -144,106 +198,84 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     hessian_.resize(nf, nf);
     hessian_.resizeNonZeros(static_cast<Index>(nnz));
     for (Index j = 0; j <= nf; ++j) hessian_.outerIndexPtr()[j] = static_cast<int>(column_begin[j]);
-    tbb::parallel_for(tbb::blocked_range<Index>(0, nf, kColumnGrain),
-                      [&](const tbb::blocked_range<Index>& range) {
-                          std::vector<Index> rows;
-                          for (Index j = range.begin(); j != range.end(); ++j) {
-                              collect_rows(j, rows);
-                              std::copy(rows.begin(), rows.end(),
-                                        hessian_.innerIndexPtr() + column_begin[j]);
-                          }
-                      });
-    std::fill(hessian_.valuePtr(), hessian_.valuePtr() + nnz, 0.0);
-    diagonal_position_.assign(column_begin.begin(), column_begin.end() - 1);
+    int* const pattern = hessian_.innerIndexPtr();
 
-    // Visits every (element Hessian entry -> matrix entry) contribution of column j whose term
-    // passes `want`, in the fixed order (term, element, local column, local row).
-    auto for_each_contribution = [&](Index j, auto&& want, auto&& visit) {
-        const int* rows_begin = hessian_.innerIndexPtr() + column_begin[j];
-        const int* rows_end = hessian_.innerIndexPtr() + column_begin[j + 1];
-        for (std::int64_t p = incidence_begin[j]; p < incidence_begin[j + 1]; ++p) {
-            const Incidence& in = incidences[p];
-            if (!want(in.term)) continue;
-            const Term& term = problem.term(in.term);
-            const Index* vars = term.element_variables(in.element);
-            for (int r = 0; r < term.arity(); ++r) {
-                const Index i = free_of_variable_[vars[r]];
-                if (i < j) continue;
-                const std::int64_t entry =
-                    column_begin[j] + (std::lower_bound(rows_begin, rows_end, i) - rows_begin);
-                const std::int64_t local = std::int64_t(in.local) * term.arity() + r;
-                visit(entry, in, local);
-            }
-        }
-    };
-
-    // Gather lists of the non-quadratic terms, per matrix entry.
-    auto non_quadratic = [&](TermId t) { return hessian_offset_[t] >= 0; };
+    // Pass 2: the pattern; the number of non-quadratic contributions to each entry, and of the
+    // entries of each column that each quadratic term touches.
     entry_source_begin_.assign(nnz + 1, 0);
-    tbb::parallel_for(tbb::blocked_range<Index>(0, nf, kColumnGrain),
-                      [&](const tbb::blocked_range<Index>& range) {
-                          for (Index j = range.begin(); j != range.end(); ++j) {
-                              for_each_contribution(
-                                  j, non_quadratic,
-                                  [&](std::int64_t entry, const Incidence&, std::int64_t) {
-                                      ++entry_source_begin_[entry];
-                                  });
-                          }
-                      });
-    counts_to_offsets(entry_source_begin_);
-    entry_source_.resize(entry_source_begin_[nnz]);
+    std::vector<std::vector<std::int64_t>> quadratic_begin(num_quadratic,
+                                                           std::vector<std::int64_t>(nf + 1, 0));
     tbb::parallel_for(
-        tbb::blocked_range<Index>(0, nf, kColumnGrain),
-        [&](const tbb::blocked_range<Index>& range) {
+        tbb::blocked_range<Index>(0, nf, kColumnGrain), [&](const tbb::blocked_range<Index>& range) {
+            ColumnScratch& c = scratches.local();
             for (Index j = range.begin(); j != range.end(); ++j) {
-                // Entries of column j are filled only from column j: a local cursor suffices.
-                std::vector<std::int64_t> cursor(entry_source_begin_.begin() + column_begin[j],
-                                                 entry_source_begin_.begin() + column_begin[j + 1]);
-                for_each_contribution(
-                    j, non_quadratic,
-                    [&](std::int64_t entry, const Incidence& in, std::int64_t local) {
-                        const std::int64_t N = problem.term(in.term).arity();
-                        entry_source_[cursor[entry - column_begin[j]]++] =
-                            hessian_offset_[in.term] + std::int64_t(in.element) * N * N + local;
-                    });
+                collect_rows(j, c);
+                std::sort(c.rows.begin(), c.rows.end());
+                const std::size_t length = c.rows.size();
+                for (std::size_t k = 0; k < length; ++k) {
+                    pattern[column_begin[j] + std::int64_t(k)] = static_cast<int>(c.rows[k]);
+                    c.slot[c.rows[k]] = static_cast<Index>(k);
+                }
+                c.quadratic_touched.assign(num_quadratic * length, 0);
+                for_each_contribution(j, c, [&](Index k, const Incidence& in, std::int64_t) {
+                    const int q = quadratic_index[in.term];
+                    if (q < 0) {
+                        ++entry_source_begin_[column_begin[j] + k];
+                    } else if (!c.quadratic_touched[q * length + k]) {
+                        c.quadratic_touched[q * length + k] = 1;
+                        ++quadratic_begin[q][j];
+                    }
+                });
             }
         });
-
-    // Quadratic terms: evaluate, project unless convex (negative curvature clamped to zero) and
-    // sum once.
-    const Eigen::VectorXd& x = problem.variables();
-    for (TermId t = 0; t < num_terms; ++t) {
-        const Term& term = problem.term(t);
-        if (!term.is_quadratic()) continue;
-        const std::int64_t N = term.arity();
-        std::vector<double> g(std::size_t(term.num_elements()) * N);
-        std::vector<double> h(std::size_t(term.num_elements()) * N * N);
-        term.evaluate(x, 1.0, g.data(), h.data());
-        if (!term.is_convex()) term.project(x, h.data(), ProjectionMode::kClamp, 0.0);
-        std::vector<double> dense(nnz, 0.0);
-        std::vector<unsigned char> touched(nnz, 0);
-        auto this_term = [t](TermId u) { return u == t; };
-        tbb::parallel_for(
-            tbb::blocked_range<Index>(0, nf, kColumnGrain),
-            [&](const tbb::blocked_range<Index>& range) {
-                for (Index j = range.begin(); j != range.end(); ++j) {
-                    for_each_contribution(
-                        j, this_term,
-                        [&](std::int64_t entry, const Incidence& in, std::int64_t local) {
-                            dense[entry] += h[std::size_t(in.element) * N * N + local];
-                            touched[entry] = 1;
-                        });
-                }
-            });
-        QuadraticPart part{t, {}, {}};
-        for (std::int64_t p = 0; p < nnz; ++p) {
-            if (touched[p]) {
-                part.position.push_back(p);
-                part.value.push_back(dense[p]);
-            }
-        }
-        quadratic_parts_.push_back(std::move(part));
+    counts_to_offsets(entry_source_begin_);
+    entry_source_.resize(entry_source_begin_[nnz]);
+    for (std::size_t q = 0; q < num_quadratic; ++q) {
+        counts_to_offsets(quadratic_begin[q]);
+        quadratic_parts_[q].position.resize(quadratic_begin[q][nf]);
+        quadratic_parts_[q].value.resize(quadratic_begin[q][nf]);
     }
+
+    // Pass 3: the gather lists of the non-quadratic terms, per entry, and the sums of the
+    // quadratic ones.
+    tbb::parallel_for(
+        tbb::blocked_range<Index>(0, nf, kColumnGrain), [&](const tbb::blocked_range<Index>& range) {
+            ColumnScratch& c = scratches.local();
+            for (Index j = range.begin(); j != range.end(); ++j) {
+                const std::int64_t begin = column_begin[j];
+                const std::size_t length = std::size_t(column_begin[j + 1] - begin);
+                for (std::size_t k = 0; k < length; ++k)
+                    c.slot[pattern[begin + std::int64_t(k)]] = static_cast<Index>(k);
+                // Entries of column j are filled only from column j: a local cursor suffices.
+                c.cursor.assign(entry_source_begin_.begin() + begin,
+                              entry_source_begin_.begin() + begin + std::int64_t(length));
+                c.quadratic_value.assign(num_quadratic * length, 0.0);
+                c.quadratic_touched.assign(num_quadratic * length, 0);
+                for_each_contribution(j, c, [&](Index k, const Incidence& in, std::int64_t local) {
+                    const int q = quadratic_index[in.term];
+                    const std::int64_t N = problem.term(in.term).arity();
+                    if (q < 0) {
+                        entry_source_[c.cursor[k]++] =
+                            hessian_offset_[in.term] + std::int64_t(in.element) * N * N + local;
+                    } else {
+                        c.quadratic_value[q * length + k] +=
+                            quadratic_hessians[q][std::size_t(in.element) * N * N + local];
+                        c.quadratic_touched[q * length + k] = 1;
+                    }
+                });
+                for (std::size_t q = 0; q < num_quadratic; ++q) {
+                    std::int64_t out = quadratic_begin[q][j];
+                    for (std::size_t k = 0; k < length; ++k) {
+                        if (!c.quadratic_touched[q * length + k]) continue;
+                        quadratic_parts_[q].position[out] = begin + std::int64_t(k);
+                        quadratic_parts_[q].value[out] = c.quadratic_value[q * length + k];
+                        ++out;
+                    }
+                }
+            }
+        });
+    std::fill(hessian_.valuePtr(), hessian_.valuePtr() + nnz, 0.0);
+    diagonal_position_.assign(column_begin.begin(), column_begin.end() - 1);
     gradient_.setZero(nf);
 }
 

@@ -1,0 +1,97 @@
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "optim/hessian_assembler.h"
+#include "optim/optim.h"
+#include "test_energies.h"
+
+namespace sa {
+namespace {
+
+/// 0.5 * c * (x_i - 2 x_j)^2: quadratic and convex, coupling two variables.
+struct QuadraticLink : AutodiffEnergy<QuadraticLink, 2> {
+    static constexpr bool is_quadratic = true;
+    static constexpr bool is_convex = true;
+    template <class T>
+    T energy(Index e, const Eigen::Matrix<T, 2, 1>& x) const {
+        return 0.5 * (1.0 + 0.1 * double(e % 7)) * (x[0] - 2.0 * x[1]) * (x[0] - 2.0 * x[1]);
+    }
+};
+
+/// The dense sum of every term's weighted, projected element Hessians over all variables.
+Eigen::MatrixXd dense_reference(const Problem& problem, const Eigen::VectorXd& x) {
+    const Index n = problem.num_variables();
+    Eigen::MatrixXd H = Eigen::MatrixXd::Zero(n, n);
+    for (TermId t = 0; t < problem.num_terms(); ++t) {
+        const Term& term = problem.term(t);
+        const int N = term.arity();
+        std::vector<double> g(std::size_t(term.num_elements()) * N);
+        std::vector<double> h(g.size() * N);
+        term.evaluate(x, term.weight(), g.data(), h.data());
+        if (!term.is_convex()) term.project(x, h.data(), ProjectionMode::kClamp, 1e-8);
+        for (Index e = 0; e < term.num_elements(); ++e) {
+            const Index* vars = term.element_variables(e);
+            for (int a = 0; a < N; ++a)
+                for (int b = 0; b < N; ++b)
+                    H(vars[b], vars[a]) += h[std::size_t(e) * N * N + std::size_t(a) * N + b];
+        }
+    }
+    return H;
+}
+
+// The assembled lower triangle equals the dense sum of the element Hessians restricted to the free
+// variables, for terms with and without a constant Hessian sharing entries, repeated elements,
+// fixed variables and a variable no term uses.
+TEST(HessianAssembler, MatchesTheDenseSumOfElementHessians) {
+    const int n = 300;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    std::uniform_int_distribution<int> pick(0, n - 2);  // variable n - 1 is used by no term
+    Eigen::VectorXd x0(n);
+    for (int i = 0; i < n; ++i) x0[i] = uniform(rng);
+    Problem problem(x0);
+    std::vector<std::array<Index, 2>> links, springs;
+    for (int k = 0; k < 4 * n; ++k) {
+        const int a = pick(rng), b = pick(rng);
+        if (a != b) links.push_back({a, b});
+        const int c = pick(rng), d = pick(rng);
+        if (c != d) springs.push_back({c, d});
+    }
+    links.push_back(links.front());  // the same element twice
+    test::Parabola parabola;
+    std::vector<std::array<Index, 1>> singles;
+    for (int i = 0; i < n - 1; i += 3) {
+        parabola.curvature.push_back(2.0);
+        parabola.target.push_back(0.5);
+        singles.push_back({i});
+    }
+    problem.add_term("rosenbrock", test::RosenbrockLink{}, springs, 0.3);
+    problem.add_term("links", QuadraticLink{}, links, 2.0);
+    problem.add_term("parabola", parabola, singles, 0.7);
+    problem.add_term("springs", test::Spring{}, links, 1.5);
+    for (int i = 0; i < n; i += 11) problem.set_fixed(i);
+
+    HessianAssembler assembler(problem);
+    PhaseTimes times;
+    assembler.evaluate(problem, problem.variables(), ProjectionMode::kClamp, 1e-8, times);
+    const Eigen::MatrixXd reference = dense_reference(problem, problem.variables());
+    const Eigen::MatrixXd assembled = Eigen::MatrixXd(assembler.hessian());
+    const std::vector<Index>& variable = assembler.variable_of_free();
+    ASSERT_EQ(assembler.num_free(), n - 1 - (n - 1 + 10) / 11);
+    double largest_error = 0.0;
+    for (Index j = 0; j < assembler.num_free(); ++j) {
+        for (Index i = 0; i < assembler.num_free(); ++i) {
+            const double expected = i >= j ? reference(variable[i], variable[j]) : 0.0;
+            largest_error = std::max(largest_error, std::abs(assembled(i, j) - expected));
+        }
+    }
+    EXPECT_LT(largest_error, 1e-9 * reference.cwiseAbs().maxCoeff());
+    // Every stored entry is in the lower triangle and the diagonal is stored.
+    for (Index j = 0; j < assembler.num_free(); ++j) {
+        EXPECT_EQ(assembler.hessian().innerIndexPtr()[assembler.diagonal_positions()[j]], j);
+    }
+}
+
+}  // namespace
+}  // namespace sa
