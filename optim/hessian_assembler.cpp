@@ -206,7 +206,8 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     std::vector<std::vector<std::int64_t>> quadratic_begin(num_quadratic,
                                                            std::vector<std::int64_t>(nf + 1, 0));
     tbb::parallel_for(
-        tbb::blocked_range<Index>(0, nf, kColumnGrain), [&](const tbb::blocked_range<Index>& range) {
+        tbb::blocked_range<Index>(0, nf, kColumnGrain),
+        [&](const tbb::blocked_range<Index>& range) {
             ColumnScratch& c = scratches.local();
             for (Index j = range.begin(); j != range.end(); ++j) {
                 collect_rows(j, c);
@@ -239,7 +240,8 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     // Pass 3: the gather lists of the non-quadratic terms, per entry, and the sums of the
     // quadratic ones.
     tbb::parallel_for(
-        tbb::blocked_range<Index>(0, nf, kColumnGrain), [&](const tbb::blocked_range<Index>& range) {
+        tbb::blocked_range<Index>(0, nf, kColumnGrain),
+        [&](const tbb::blocked_range<Index>& range) {
             ColumnScratch& c = scratches.local();
             for (Index j = range.begin(); j != range.end(); ++j) {
                 const std::int64_t begin = column_begin[j];
@@ -248,7 +250,7 @@ HessianAssembler::HessianAssembler(const Problem& problem)
                     c.slot[pattern[begin + std::int64_t(k)]] = static_cast<Index>(k);
                 // Entries of column j are filled only from column j: a local cursor suffices.
                 c.cursor.assign(entry_source_begin_.begin() + begin,
-                              entry_source_begin_.begin() + begin + std::int64_t(length));
+                                entry_source_begin_.begin() + begin + std::int64_t(length));
                 c.quadratic_value.assign(num_quadratic * length, 0.0);
                 c.quadratic_touched.assign(num_quadratic * length, 0);
                 for_each_contribution(j, c, [&](Index k, const Incidence& in, std::int64_t local) {
