@@ -2,7 +2,12 @@
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
+#include <new>
 #include <optional>
+#include <type_traits>
+#include <vector>
+
+#include <amd.h>
 
 #include "optim/errors.h"
 
@@ -35,9 +40,33 @@ LinearSolverType parse_linear_solver(const std::string& name) {
 
 namespace {
 using SparseMatrix = Eigen::SparseMatrix<double>;
+
+/// Fill-reducing ordering for Eigen's simplicial factorizations by SuiteSparse's AMD (the one
+/// CHOLMOD uses) instead of Eigen's own: the same fill, and an analysis ten times faster (tlc/
+/// param2d's 8,090 unknowns: 2.7 ms instead of 23 ms; a 2,937-unknown submesh of tlc/stgc-3d:
+/// 1.8 ms instead of 19 ms; measured once each on this machine), which matters when every
+/// submesh is analyzed once and factored a few times. Eigen hands it the full symmetric pattern.
+struct SuiteSparseAmdOrdering {
+    template <class Matrix, class Permutation>
+    void operator()(const Matrix& symmetric, Permutation& permutation) const {
+        static_assert(std::is_same_v<typename Matrix::StorageIndex, int>, "amd_order takes int");
+        const int n = static_cast<int>(symmetric.cols());
+        std::vector<int> order(n);  // order[k]: the k-th pivot
+        const int status = amd_order(n, symmetric.outerIndexPtr(), symmetric.innerIndexPtr(),
+                                     order.data(), nullptr, nullptr);
+        if (status == AMD_OUT_OF_MEMORY) throw std::bad_alloc();
+        if (status < AMD_OK) {
+            throw InvalidArgumentError("linear solver: AMD rejected the matrix pattern (status " +
+                                       std::to_string(status) + ")");
+        }
+        permutation.resize(n);
+        for (int k = 0; k < n; ++k) permutation.indices()(k) = order[k];
+    }
+};
+
 using CholmodSupernodal = Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>;
 using CholmodSimplicial = Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower>;
-using EigenLDLT = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>;
+using EigenLDLT = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, SuiteSparseAmdOrdering>;
 
 /// CHOLMOD reports through its own printf by default; the library stays silent and reports
 /// through statuses instead.

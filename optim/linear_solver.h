@@ -5,7 +5,8 @@
 //   kCholmodSupernodal   CHOLMOD supernodal LL^T (BLAS-3 on dense supernodes, OpenBLAS);
 //                        the default, and the fastest on meshes beyond a few thousand elements.
 //   kCholmodSimplicial   CHOLMOD simplicial LL^T: no BLAS; fast on small systems.
-//   kEigenLDLT           Eigen's SimplicialLDLT (AMD ordering).
+//   kEigenLDLT           Eigen's SimplicialLDLT, ordered by SuiteSparse's AMD (the analysis is ten
+//                        times faster than with Eigen's own AMD, for the same fill).
 //   kAuto                kEigenLDLT below kAutoSupernodalSize unknowns, where the threads of the
 //                        BLAS and of CHOLMOD cost more than they save (measured: a 3D submesh of
 //                        2,700 unknowns factors twice as fast), and when CHOLMOD's analysis
