@@ -34,6 +34,64 @@ std::vector<Index> grow_rings(const SimplicialMesh& mesh, const MeshTopology& to
     return current;
 }
 
+std::vector<Index> fill_enclosed(const MeshTopology& topology, const std::vector<Index>& region) {
+    const int d = topology.dimension;
+    const Index n = static_cast<Index>(topology.neighbour.size() / (d + 1));
+    Index mesh_parts = 0;
+    const std::vector<Index> mesh_part = topology.simplex_components(&mesh_parts);
+    std::vector<unsigned char> part_has_boundary(mesh_parts, 0);
+    for (const BoundaryFacet& f : topology.boundary_facets)
+        part_has_boundary[mesh_part[f.simplex]] = 1;
+
+    // Components of the rest: -2 in the region, -1 not visited yet.
+    std::vector<Index> rest(n, -1);
+    for (Index s : region) rest[s] = -2;
+    struct Component {
+        std::vector<Index> simplices;
+        bool reaches_boundary = false;
+    };
+    std::vector<Component> components;
+    std::vector<Index> stack;
+    for (Index seed = 0; seed < n; ++seed) {
+        if (rest[seed] != -1) continue;
+        Component c;
+        rest[seed] = static_cast<Index>(components.size());
+        stack.push_back(seed);
+        while (!stack.empty()) {
+            const Index s = stack.back();
+            stack.pop_back();
+            c.simplices.push_back(s);
+            for (int k = 0; k <= d; ++k) {
+                const Index t = topology.neighbour_of(s, k);
+                if (t < 0) {
+                    c.reaches_boundary = true;
+                } else if (rest[t] == -1) {
+                    rest[t] = rest[seed];
+                    stack.push_back(t);
+                }
+            }
+        }
+        components.push_back(std::move(c));
+    }
+    // In a part without boundary the largest component of the rest is the outside.
+    std::vector<Index> largest(mesh_parts, -1);
+    for (std::size_t c = 0; c < components.size(); ++c) {
+        const Index part = mesh_part[components[c].simplices.front()];
+        if (!part_has_boundary[part] &&
+            (largest[part] < 0 ||
+             components[c].simplices.size() > components[largest[part]].simplices.size()))
+            largest[part] = static_cast<Index>(c);
+    }
+    std::vector<Index> filled = region;
+    for (std::size_t c = 0; c < components.size(); ++c) {
+        const Index part = mesh_part[components[c].simplices.front()];
+        if (components[c].reaches_boundary || largest[part] == Index(c)) continue;
+        filled.insert(filled.end(), components[c].simplices.begin(), components[c].simplices.end());
+    }
+    std::sort(filled.begin(), filled.end());
+    return filled;
+}
+
 std::vector<std::vector<Index>> vertex_connected_regions(const SimplicialMesh& mesh,
                                                          const MeshTopology& topology,
                                                          const std::vector<Index>& simplices) {

@@ -16,6 +16,15 @@ namespace sa {
 std::vector<Index> grow_rings(const SimplicialMesh& mesh, const MeshTopology& topology,
                               const std::vector<Index>& seeds, int rings);
 
+/// `region` (sorted) plus the parts of the mesh it encloses: the components of the rest of the
+/// mesh (connected over shared facets) that hold no boundary facet of the mesh; in a connected
+/// part of the mesh without boundary, every component of the rest but its largest. Sorted.
+///
+/// A triangle region with a hole cannot be solved alone: the linear parts can agree on every
+/// shared edge and still fail to integrate to vertex positions around the hole (a period), so that
+/// the recovered map folds although every simplex was assembled.
+std::vector<Index> fill_enclosed(const MeshTopology& topology, const std::vector<Index>& region);
+
 /// Splits a set of simplices into groups connected through shared vertices (each sorted; groups
 /// ordered by their smallest simplex).
 std::vector<std::vector<Index>> vertex_connected_regions(const SimplicialMesh& mesh,

@@ -112,7 +112,9 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
         record.bad_simplices = static_cast<Index>(bad.size());
         std::vector<Region> pending;
         for (auto& simplices : vertex_connected_regions(
-                 input.mesh, p.topology, grow_rings(input.mesh, p.topology, bad, options.rings))) {
+                 input.mesh, p.topology,
+                 fill_enclosed(p.topology,
+                               grow_rings(input.mesh, p.topology, bad, options.rings)))) {
             pending.push_back({std::move(simplices), options.rings});
         }
         record.regions = static_cast<Index>(pending.size());
@@ -195,8 +197,10 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
                     }
                     if (ok) {
                     } else if (region.rings + 2 <= options.max_rings) {
-                        retry.push_back({grow_rings(input.mesh, p.topology, region.simplices, 2),
-                                         region.rings + 2});
+                        retry.push_back(
+                            {fill_enclosed(p.topology,
+                                           grow_rings(input.mesh, p.topology, region.simplices, 2)),
+                             region.rings + 2});
                     } else {
                         ++record.failed;
                     }
