@@ -13,6 +13,7 @@ packages=(
     libvtk9-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     libcli11-dev nlohmann-json3-dev
+    libjemalloc-dev
     libcairo2-dev
     libx11-dev xvfb xauth
 )
