@@ -7,14 +7,13 @@
 //   kCholmodSimplicial   CHOLMOD simplicial LL^T: no BLAS; fast on small systems.
 //   kEigenLDLT           Eigen's SimplicialLDLT, ordered by SuiteSparse's AMD (the analysis is ten
 //                        times faster than with Eigen's own AMD, for the same fill).
-//   kAuto                kEigenLDLT below kAutoSupernodalSize unknowns, where the threads of the
-//                        BLAS and of CHOLMOD cost more than they save (measured: a 3D submesh of
-//                        2,700 unknowns factors twice as fast), and when CHOLMOD's analysis
+//   kAuto                kEigenLDLT below kAutoSupernodalSize unknowns, and when CHOLMOD's analysis
 //                        counts fewer than kAutoSupernodalFlops for the factorization: the
-//                        supernodes are then too small for BLAS-3 to pay (measured: tlc/param2d,
-//                        8,090 unknowns, 2.1e7 flops: 23 ms supernodal, 7.6 ms LDLT; tlc/stgc-3d,
-//                        16,845 unknowns, 3.6e8 flops: 85 ms and 89 ms); kCholmodSupernodal
-//                        otherwise.
+//                        supernodes are then too small for BLAS-3 to pay (measured, with
+//                        CHOLMOD's threads sized as in linear_solver.cpp: tlc/param2d, 8,090
+//                        unknowns, 2.1e7 flops: 13.9 ms supernodal, 7.8 ms LDLT; a 2,937-unknown
+//                        3D submesh, 2.7e7 flops: 6.9 and 8.1 ms; tlc/stgc-3d, 16,845 unknowns,
+//                        3.6e8 flops: 59 and 102 ms); kCholmodSupernodal otherwise.
 // The symbolic analysis (fill-reducing ordering) is done by analyze() and reused by every
 // factorize() until analyze() is called again. CHOLMOD's ordering is chosen by FillOrdering:
 //   kBest   CHOLMOD's default: AMD, then METIS when AMD's fill is large, the better kept. Pays off
