@@ -106,7 +106,8 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
     log_line(observer.logger, line);
 
     for (int round = 0; !bad.empty() && round <= options.max_rounds; ++round) {
-        Stopwatch round_watch;
+        Stopwatch round_watch;  // lapped into the stage times below
+        const Stopwatch round_total;
         SubmeshRound record;
         record.round = round;
         record.bad_simplices = static_cast<Index>(bad.size());
@@ -211,8 +212,8 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
         }
         bad = bad_simplices_at<D>(p, positions);
         record.remaining = static_cast<Index>(bad.size());
-        record.time = round_watch.seconds();
         stats.region_time += round_watch.lap();
+        record.time = round_total.seconds();
         std::snprintf(line, sizeof line,
                       "round %d: %ld bad simplices, %ld regions (%d colours), %ld solved, %ld "
                       "given up; %ld bad left",
