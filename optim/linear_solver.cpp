@@ -69,11 +69,18 @@ struct SuiteSparseAmdOrdering {
 /// constant 4 fixed when it was compiled, whatever OMP_NUM_THREADS says: on 2 cores the extra
 /// threads spin and wait on futexes. With dynamic adjustment, the OpenMP runtime gives a loop no
 /// more threads than there are idle cores. Measured on tlc/stgc-3d's full Hessian (16,845
-/// unknowns, 3.6e8 flops): 105 ms per supernodal factorization, 66 ms with it. The setting
-/// belongs to the calling thread, so it is made before each call into CHOLMOD.
-void limit_cholmod_threads() {
-    omp_set_dynamic(1);
-}
+/// unknowns, 3.6e8 flops): 105 ms per supernodal factorization, 66 ms with it. The setting belongs
+/// to the calling thread; it is made for each call into CHOLMOD and the caller's restored after.
+class DynamicOpenMPThreads {
+  public:
+    DynamicOpenMPThreads() : previous_(omp_get_dynamic()) { omp_set_dynamic(1); }
+    ~DynamicOpenMPThreads() { omp_set_dynamic(previous_); }
+    DynamicOpenMPThreads(const DynamicOpenMPThreads&) = delete;
+    DynamicOpenMPThreads& operator=(const DynamicOpenMPThreads&) = delete;
+
+  private:
+    int previous_;
+};
 
 using CholmodSupernodal = Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>;
 using CholmodSimplicial = Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower>;
@@ -127,8 +134,10 @@ struct LinearSolver::Impl {
 
     template <class Cholmod>
     FactorizationStatus factorize_cholmod(Cholmod& solver, const SparseMatrix& lower) {
-        limit_cholmod_threads();
-        solver.factorize(lower);
+        {
+            const DynamicOpenMPThreads threads;
+            solver.factorize(lower);
+        }
         const int status = solver.cholmod().status;
         if (solver.info() == Eigen::Success && status >= CHOLMOD_OK)
             return FactorizationStatus::kSuccess;
@@ -173,7 +182,7 @@ void LinearSolver::analyze(const SparseMatrix& lower) {
         throw InvalidArgumentError("linear solver: matrix is " + std::to_string(lower.rows()) +
                                    " x " + std::to_string(lower.cols()) + ", not square");
     }
-    limit_cholmod_threads();
+    const DynamicOpenMPThreads threads;
     if (impl_->requested == LinearSolverType::kAuto) {
         impl_->make(lower.rows() < kAutoSupernodalSize ? LinearSolverType::kEigenLDLT
                                                        : LinearSolverType::kCholmodSupernodal);
@@ -219,6 +228,7 @@ Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& rhs) const {
 }
 
 Eigen::MatrixXd LinearSolver::solve_columns(const Eigen::MatrixXd& rhs) const {
+    const DynamicOpenMPThreads threads;
     switch (impl_->type) {
         case LinearSolverType::kCholmodSupernodal:
             return impl_->supernodal->solve(rhs);
