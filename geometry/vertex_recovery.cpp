@@ -1,6 +1,7 @@
 #include "geometry/vertex_recovery.h"
 
 #include <Eigen/Sparse>
+#include <string>
 
 #include "optim/errors.h"
 
@@ -20,6 +21,28 @@ VertexRecovery<D>::VertexRecovery(const SimplicialMesh& mesh, const RestFrames<D
         if (used[v] && !fixed_[v]) free_index_[v] = num_free_++;
     }
     if (num_free_ == 0) return;
+    // Each connected part of the mesh needs a fixed vertex, or the system is singular: checked on
+    // the graph itself, since a factorization of a singular system need not fail in rounding.
+    std::vector<Index> root(nv);
+    for (Index v = 0; v < nv; ++v) root[v] = v;
+    auto find = [&root](Index v) {
+        while (root[v] != v) v = root[v] = root[root[v]];
+        return v;
+    };
+    for (Index s = 0; s < mesh.num_simplices(); ++s) {
+        for (int k = 1; k <= D; ++k) root[find(mesh.simplices(s, k))] = find(mesh.simplices(s, 0));
+    }
+    std::vector<unsigned char> anchored(nv, 0);
+    for (Index v = 0; v < nv; ++v) {
+        if (used[v] && fixed_[v]) anchored[find(v)] = 1;
+    }
+    for (Index v = 0; v < nv; ++v) {
+        if (used[v] && !anchored[find(v)]) {
+            throw InvalidArgumentError(
+                "vertex recovery: the system is singular: a connected part of the mesh (vertex " +
+                std::to_string(v) + ") has no fixed vertex");
+        }
+    }
     std::vector<Eigen::Triplet<double>> entries;
     for (Index s = 0; s < mesh.num_simplices(); ++s) {
         for (int a = 0; a <= D; ++a) {
@@ -38,9 +61,7 @@ VertexRecovery<D>::VertexRecovery(const SimplicialMesh& mesh, const RestFrames<D
     solver_ = std::make_unique<LinearSolver>(LinearSolverType::kCholmodSupernodal);
     solver_->analyze(lower);
     if (solver_->factorize(lower) != FactorizationStatus::kSuccess) {
-        throw InvalidArgumentError(
-            "vertex recovery: the system is singular: a connected part of the mesh has no fixed "
-            "vertex");
+        throw InvalidArgumentError("vertex recovery: the system could not be factored");
     }
 }
 
