@@ -1,5 +1,11 @@
-// Settings of jemalloc, the allocator the `sa` command links (read by jemalloc when it starts,
-// before main; MALLOC_CONF in the environment can still override them).
+#include "frontends/cli/runtime_settings.h"
+
+#include <dlfcn.h>
+
+#include <cstdlib>
+
+// jemalloc, the allocator the command links, reads `malloc_conf` when it starts, before main
+// (MALLOC_CONF in the environment can still override it).
 //
 // thp:always asks the kernel for 2 MB transparent huge pages for the heap. On the 2-core machines
 // this project is measured on, a first touch of a 4 KB page costs about 11 us (a 64 MB memset:
@@ -10,3 +16,15 @@ extern "C" {
 // NOLINTNEXTLINE: the name and type are jemalloc's interface.
 const char* malloc_conf = "thp:always,metadata_thp:always";
 }
+
+namespace sa::cli {
+
+void apply_runtime_settings() {
+    if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
+    // Looked up rather than linked: the BLAS behind CHOLMOD is chosen by Debian's alternatives.
+    using SetThreads = void (*)(int);
+    if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
+        set(1);
+}
+
+}  // namespace sa::cli

@@ -11,10 +11,12 @@
 #include "frontends/cli/demo_command.h"
 #include "frontends/cli/map_command.h"
 #include "frontends/cli/param_command.h"
+#include "frontends/cli/runtime_settings.h"
 #include "frontends/cli/seamless_command.h"
 #include "optim/errors.h"
 
 int main(int argc, char** argv) {
+    sa::cli::apply_runtime_settings();
     CLI::App app{"sa: inversion-free mappings by Simplex Assembly (Fu and Liu 2016)"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "sa 0.1.0");
