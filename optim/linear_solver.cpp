@@ -196,10 +196,8 @@ void LinearSolver::analyze(const SparseMatrix& lower) {
                                    " x " + std::to_string(lower.cols()) + ", not square");
     }
     const DynamicOpenMPThreads threads;
-    if (impl_->requested == LinearSolverType::kAuto) {
-        impl_->make(lower.rows() < kAutoSupernodalSize ? LinearSolverType::kEigenLDLT
-                                                       : LinearSolverType::kCholmodSupernodal);
-    }
+    if (impl_->requested == LinearSolverType::kAuto)
+        impl_->make(LinearSolverType::kCholmodSupernodal);
     switch (impl_->type) {
         case LinearSolverType::kCholmodSupernodal:
             impl_->supernodal->analyzePattern(lower);

@@ -7,13 +7,14 @@
 //   kCholmodSimplicial   CHOLMOD simplicial LL^T: no BLAS; fast on small systems.
 //   kEigenLDLT           Eigen's SimplicialLDLT, ordered by SuiteSparse's AMD (the analysis is ten
 //                        times faster than with Eigen's own AMD, for the same fill).
-//   kAuto                kEigenLDLT below kAutoSupernodalSize unknowns, and when CHOLMOD's analysis
-//                        counts fewer than kAutoSupernodalFlops for the factorization: the
-//                        supernodes are then too small for BLAS-3 to pay (measured, with
-//                        CHOLMOD's threads sized as in linear_solver.cpp: tlc/param2d, 8,090
-//                        unknowns, 2.1e7 flops: 13.9 ms supernodal, 7.8 ms LDLT; a 2,937-unknown
-//                        3D submesh, 2.7e7 flops: 6.9 and 8.1 ms; tlc/stgc-3d, 16,845 unknowns,
-//                        3.6e8 flops: 59 and 102 ms); kCholmodSupernodal otherwise.
+//   kAuto                kEigenLDLT when CHOLMOD's analysis counts fewer than kAutoSupernodalFlops
+//                        for the factorization (the supernodes are then too small for BLAS-3 to
+//                        pay), kCholmodSupernodal otherwise. Measured per factorization, with
+//                        CHOLMOD's threads sized as in linear_solver.cpp and one OpenBLAS thread
+//                        (the sa command's setting): tlc/param2d, 8,090 unknowns, 2.1e7 flops:
+//                        7.9 ms supernodal, 7.8 ms LDLT; a 2,937-unknown 3D submesh of
+//                        tlc/stgc-3d, 2.7e7 flops: 4.4 and 8.1 ms; stgc-3d's full system, 16,845
+//                        unknowns, 3.6e8 flops: 50 and 102 ms.
 // The symbolic analysis (fill-reducing ordering) is done by analyze() and reused by every
 // factorize() until analyze() is called again. CHOLMOD's ordering is chosen by FillOrdering:
 //   kBest   CHOLMOD's default: AMD, then METIS when AMD's fill is large, the better kept. Pays off
@@ -36,8 +37,7 @@ std::string to_string(LinearSolverType type);
 /// "cholmod-supernodal", "cholmod-simplicial" or "eigen-ldlt"; throws InvalidArgumentError.
 LinearSolverType parse_linear_solver(const std::string& name);
 
-inline constexpr long kAutoSupernodalSize = 5000;
-inline constexpr double kAutoSupernodalFlops = 3e8;
+inline constexpr double kAutoSupernodalFlops = 2.5e7;
 
 enum class FillOrdering { kBest, kAmd };
 
