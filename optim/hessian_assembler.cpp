@@ -149,8 +149,7 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     auto collect_rows = [&](Index j, ColumnScratch& c) {
         const std::int64_t visit = c.visit++;
         c.rows.clear();
-        c.rows.push_back(j);
-        c.seen[j] = visit;
+        c.rows.push_back(j);  // the diagonal; the candidates below are all i > j
         for (std::int64_t p = incidence_begin[j]; p < incidence_begin[j + 1]; ++p) {
             const Term& term = problem.term(incidences[p].term);
             const Index* vars = term.element_variables(incidences[p].element);

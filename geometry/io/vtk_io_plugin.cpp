@@ -221,17 +221,25 @@ void write_legacy_arrays(std::ostream& out, const char* section, Eigen::Index ro
     }
 }
 
-MeshFile read_vtk_file(const std::string& path) {
+/// Runs `reader` on `path` with VTK's messages captured; throws InputError `PATH: cannot read as
+/// FORMAT (VTK: ...)` when VTK reported an error.
+template <class Reader>
+void run_reader(Reader& reader, const std::string& path, const std::string& format) {
     io::check_readable(path);
-    auto reader = vtkSmartPointer<vtkDataSetReader>::New();
-    reader->SetFileName(path.c_str());
+    reader.SetFileName(path.c_str());
     std::string error;
     {
         VtkCapture capture;
-        reader->Update();
+        reader.Update();
         error = capture.error();
     }
-    if (!error.empty()) throw InputError(path + ": cannot read as legacy VTK (VTK: " + error + ")");
+    if (!error.empty())
+        throw InputError(path + ": cannot read as " + format + " (VTK: " + error + ")");
+}
+
+MeshFile read_vtk_file(const std::string& path) {
+    auto reader = vtkSmartPointer<vtkDataSetReader>::New();
+    run_reader(*reader, path, "legacy VTK");
     vtkDataSet* data = reader->GetOutput();
     if (data == nullptr) throw InputError(path + ": cannot read as legacy VTK");
     if (vtkUnstructuredGrid::SafeDownCast(data) == nullptr &&
@@ -242,16 +250,8 @@ MeshFile read_vtk_file(const std::string& path) {
 }
 
 MeshFile read_vtu_file(const std::string& path) {
-    io::check_readable(path);
     auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
-    reader->SetFileName(path.c_str());
-    std::string error;
-    {
-        VtkCapture capture;
-        reader->Update();
-        error = capture.error();
-    }
-    if (!error.empty()) throw InputError(path + ": cannot read as VTU (VTK: " + error + ")");
+    run_reader(*reader, path, "VTU");
     vtkUnstructuredGrid* grid = reader->GetOutput();
     if (grid == nullptr) throw InputError(path + ": cannot read as VTU");
     return to_mesh_file(path, grid);
