@@ -66,6 +66,10 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
     map->add_option("--seed", a.seed, "seed of --initialization random")->capture_default_str();
     map->add_option("--max-iterations", a.max_iterations, "Newton iterations at most")
         ->capture_default_str();
+    map->add_option("--max-time", a.max_time,
+                    "wall-clock limit in seconds on the solve (checked after each iteration); the "
+                    "map reached by then is verified, written and reported as it is")
+        ->capture_default_str();
     map->add_option("--threads", a.threads, "worker threads, 0 = all cores")->capture_default_str();
     map->add_option(
            "--out", a.out,
@@ -144,6 +148,7 @@ int run_map_command(const MapArguments& a) {
     if (!a.initialization.empty()) options.initialization = parse_initialization(a.initialization);
     options.seed = a.seed;
     options.max_iterations = a.max_iterations;
+    options.max_time_seconds = a.max_time;
     options.num_threads = a.threads;
     options.validate();
     check_writable(a.out, a.force);

@@ -18,6 +18,7 @@ struct MapArguments {
     double translation_shift = 0.0;
     double mu = 1000.0, s = 1.0, lambda_max = 1e16;
     int max_iterations = 200, threads = 0;
+    double max_time = kInfinity;
     std::uint64_t seed = 1;
     bool force = false, quiet = false, no_vertex_stage = false, until_valid = false;
 };

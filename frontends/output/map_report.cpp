@@ -54,6 +54,7 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
         {"assembly_tolerance", o.assembly_tolerance},
         {"energy_tolerance", o.energy_tolerance},
         {"max_iterations", o.max_iterations},
+        {"max_time_seconds", number(o.max_time_seconds)},
         {"handle_tolerance", o.handle_tolerance},
         {"threads", r.newton.num_threads}};
     const Verification& v = r.verification;
@@ -93,6 +94,7 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
             {"iterations", m.iterations},
             {"largest_submesh", m.largest_submesh},
             {"max_rings", m.max_rings},
+            {"out_of_time", m.out_of_time},
             {"times",
              {{"start", m.start_time}, {"regions", m.region_time}, {"solves", m.solve_time}}}};
     }

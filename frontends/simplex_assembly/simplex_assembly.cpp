@@ -11,6 +11,7 @@
 #include "optim/errors.h"
 #include "optim/newton_solver.h"
 #include "optim/stopwatch.h"
+#include "optim/time_budget.h"
 
 namespace sa {
 
@@ -36,6 +37,7 @@ std::string SubmeshStats::describe() const {
         << " submesh solves (largest " << largest_submesh << " simplices, up to " << max_rings
         << " rings, " << iterations << " Newton steps in all)";
     if (!rounds.empty()) out << ", " << rounds.back().remaining << " bad simplices left";
+    if (out_of_time) out << "; stopped at the time limit";
     return out.str();
 }
 
@@ -45,7 +47,8 @@ namespace {
 /// vertex stage. Fills positions (original units) and the solver records of `result`.
 template <int D>
 void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& options,
-                const SimplexAssemblyObserver& observer, SimplexAssemblyResult& result) {
+                const TimeBudget& budget, const SimplexAssemblyObserver& observer,
+                SimplexAssemblyResult& result) {
     Stopwatch stage;
     const AssemblyInput<D>& in = prepared.assembly;
     const SimplicialMesh& mesh = prepared.mesh;
@@ -84,7 +87,7 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
     log_line(observer.logger, "iter      energy   assembly     lambda      step  ls     time");
     NewtonOptions newton;
     newton.max_iterations = options.max_iterations;
-    newton.max_time_seconds = options.max_time_seconds;
+    newton.max_time_seconds = with_time_left(options, budget).max_time_seconds;
     newton.gradient_tolerance = newton.decrement_tolerance = newton.function_tolerance = 0.0;
     newton.projection = options.projection;
     newton.projection_epsilon = options.projection_epsilon;
@@ -151,14 +154,17 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
                                   assembly.linear_parts(problem.variables()), prepared.pinned);
     result.times.recovery += stage.lap();
 
-    if (options.vertex_stage && !options.until_valid) {
+    if (options.vertex_stage && !options.until_valid && budget.exhausted()) {
+        result.vertex_stage_note = "skipped: the time limit was reached";
+    } else if (options.vertex_stage && !options.until_valid) {
         // The anchored simplices keep all their vertices: a free part has no rigid motion left.
         std::vector<unsigned char> fixed = prepared.recovery_fixed;
         for (Index s : in.anchored_simplices) {
             for (int k = 0; k <= D; ++k) fixed[mesh.simplices(s, k)] = 1;
         }
         VertexStage vertex = run_vertex_stage<D>(mesh, frames, *prepared.energy, recovered, fixed,
-                                                 options, observer.logger, in.fans);
+                                                 with_time_left(options, budget), observer.logger,
+                                                 in.fans);
         result.vertex_stage_ran = vertex.ran;
         result.vertex_stage_note = vertex.note;
         result.vertex_stage = vertex.newton;
@@ -172,14 +178,15 @@ template <int D>
 SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOptions& options,
                           const SimplexAssemblyObserver& observer) {
     Stopwatch total;
+    const TimeBudget budget(options.max_time_seconds);
     SimplexAssemblyResult result;
     std::unique_ptr<PreparedProblem<D>> prepared = prepare_problem<D>(input, options, result.times);
     result.initial_quality = prepared->initial_quality;
     result.mode = choose_mode<D>(*prepared, options);
     if (result.mode == SolveMode::kSubmesh) {
-        solve_submeshes<D>(*prepared, options, observer, result);
+        solve_submeshes<D>(*prepared, options, budget, observer, result);
     } else {
-        solve_full<D>(*prepared, options, observer, result);
+        solve_full<D>(*prepared, options, budget, observer, result);
     }
     for (Index v = 0; v < input.mesh.num_vertices(); ++v) {
         if (!prepared->topology.used_vertex[v])

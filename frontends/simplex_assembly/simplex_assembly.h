@@ -106,6 +106,7 @@ struct SubmeshStats {
     Index largest_submesh = 0;  ///< simplices
     int max_rings = 0;
     double start_time = 0.0, region_time = 0.0, solve_time = 0.0;
+    bool out_of_time = false;  ///< max_time_seconds ran out before the regions were done
     /// One sentence.
     std::string describe() const;
 };

@@ -1,5 +1,6 @@
 #include "frontends/simplex_assembly/simplex_assembly_options.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -98,6 +99,13 @@ void SimplexAssemblyOptions::validate() const {
     if (start_iterations < 0) fail("start_iterations", start_iterations, "must be >= 0");
     if (!(auto_bad_share >= 0.0 && auto_bad_share <= 1.0))
         fail("auto_bad_share", auto_bad_share, "must be in [0, 1]");
+}
+
+SimplexAssemblyOptions with_time_left(const SimplexAssemblyOptions& options,
+                                      const TimeBudget& budget) {
+    SimplexAssemblyOptions o = options;
+    o.max_time_seconds = std::max(budget.remaining(), 1e-3);
+    return o;
 }
 
 }  // namespace sa

@@ -10,6 +10,7 @@
 #include "geometry/disassembly.h"
 #include "optim/hessian_projection.h"
 #include "optim/linear_solver.h"
+#include "optim/time_budget.h"
 
 namespace sa {
 
@@ -91,6 +92,9 @@ struct SimplexAssemblyOptions {
     double assembly_tolerance = 1e-12;
     double energy_tolerance = 1e-8;
     int max_iterations = 200;
+    /// Wall-clock limit of the whole run in seconds (every stage and submesh takes what is left;
+    /// Newton checks it after each iteration, the submesh start after each local/global step).
+    /// When it runs out, the map reached so far is recovered, verified and reported as it is.
     double max_time_seconds = kInfinity;
 
     /// Verification: handles must end within this fraction of the bounding-box diagonal of the
@@ -126,5 +130,10 @@ struct SimplexAssemblyOptions {
 
 /// The per-simplex energy's options (barrier, E_m) that `options` describe.
 SimplexEnergyOptions simplex_energy_options(const SimplexAssemblyOptions& options);
+
+/// `options` with max_time_seconds set to what `budget` has left, for a stage or a submesh: at
+/// least a millisecond, so a stage that starts takes one step (it starts only while time is left).
+SimplexAssemblyOptions with_time_left(const SimplexAssemblyOptions& options,
+                                      const TimeBudget& budget);
 
 }  // namespace sa

@@ -77,14 +77,15 @@ SolveMode choose_mode(const PreparedProblem<D>& p, const SimplexAssemblyOptions&
 
 template <int D>
 void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& options,
-                     const SimplexAssemblyObserver& observer, SimplexAssemblyResult& result) {
+                     const TimeBudget& budget, const SimplexAssemblyObserver& observer,
+                     SimplexAssemblyResult& result) {
     Stopwatch stage;
     SubmeshStats& stats = result.submesh;
     const MappingProblem& input = *p.input;
     const int threads = options.num_threads > 0 ? options.num_threads : default_thread_count();
     tbb::task_arena arena(threads);
 
-    SubmeshStart start = submesh_start<D>(p, options);
+    SubmeshStart start = submesh_start<D>(p, options, budget);
     Eigen::MatrixXd positions = std::move(start.positions);
     std::vector<Index> bad = std::move(start.bad);
     stats.start = start.description;
@@ -105,7 +106,8 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
                   stats.start_iterations, stats.start_time);
     log_line(observer.logger, line);
 
-    for (int round = 0; !bad.empty() && round <= options.max_rounds; ++round) {
+    for (int round = 0; !bad.empty() && round <= options.max_rounds && !stats.out_of_time;
+         ++round) {
         Stopwatch round_watch;  // lapped into the stage times below
         const Stopwatch round_total;
         SubmeshRound record;
@@ -148,6 +150,11 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
             stats.region_time += round_watch.lap();
             std::vector<Region> retry;
             for (int c = 0; c < colors; ++c) {
+                if (budget.exhausted()) {
+                    stats.out_of_time = true;
+                    log_line(observer.logger, "  time limit reached: no further region is solved");
+                    break;
+                }
                 std::vector<Index> members;
                 for (std::size_t r = 0; r < pending.size(); ++r) {
                     if (color[r] == c) members.push_back(Index(r));
@@ -167,7 +174,8 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
                 arena.execute([&] {
                     tbb::parallel_for(std::size_t(0), members.size(), [&](std::size_t i) {
                         solved[i] = solve_region(
-                            input, p.topology, positions, is_handle, pending[members[i]], options,
+                            input, p.topology, positions, is_handle, pending[members[i]],
+                            with_time_left(options, budget),
                             inner, members.size() == 1 ? observer.logger : Logger{}, subs[i]);
                     });
                 });
@@ -208,6 +216,7 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
                 }
             }
             stats.solve_time += round_watch.lap();
+            if (stats.out_of_time) break;
             pending.swap(retry);
         }
         bad = bad_simplices_at<D>(p, positions);
@@ -229,6 +238,8 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
     const bool any_repaired = std::find(repaired.begin(), repaired.end(), 1) != repaired.end();
     if (options.vertex_stage && !options.until_valid && bad.empty() && !any_repaired) {
         result.vertex_stage_note = "skipped: the initial map was valid and nothing moved";
+    } else if (options.vertex_stage && !options.until_valid && bad.empty() && budget.exhausted()) {
+        result.vertex_stage_note = "skipped: the time limit was reached";
     } else if (options.vertex_stage && !options.until_valid && bad.empty()) {
         Stopwatch vertex_watch;
         std::vector<unsigned char> fixed(p.mesh.num_vertices(), 0);
@@ -238,7 +249,8 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
         }
         VertexStage vertex = run_vertex_stage<D>(p.mesh, p.frames, *p.energy,
                                                  (positions.rowwise() - p.map_center) * p.scale,
-                                                 fixed, options, observer.logger);
+                                                 fixed, with_time_left(options, budget),
+                                                 observer.logger);
         result.vertex_stage_ran = vertex.ran;
         result.vertex_stage_note = vertex.note;
         result.vertex_stage = vertex.newton;
@@ -251,8 +263,10 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
 template SolveMode choose_mode<2>(const PreparedProblem<2>&, const SimplexAssemblyOptions&);
 template SolveMode choose_mode<3>(const PreparedProblem<3>&, const SimplexAssemblyOptions&);
 template void solve_submeshes<2>(PreparedProblem<2>&, const SimplexAssemblyOptions&,
-                                 const SimplexAssemblyObserver&, SimplexAssemblyResult&);
+                                 const TimeBudget&, const SimplexAssemblyObserver&,
+                                 SimplexAssemblyResult&);
 template void solve_submeshes<3>(PreparedProblem<3>&, const SimplexAssemblyOptions&,
-                                 const SimplexAssemblyObserver&, SimplexAssemblyResult&);
+                                 const TimeBudget&, const SimplexAssemblyObserver&,
+                                 SimplexAssemblyResult&);
 
 }  // namespace sa

@@ -16,6 +16,8 @@
 //      (mode kFull) and its result kept only if verified; a region that fails grows by two rings
 //      and is solved again, up to m_max rings. Regions that overlap after growing conflict: the
 //      conflict graph is coloured and each colour's regions are solved side by side with TBB.
+// When options.max_time_seconds runs out, the start stops at its best iterate so far and no
+// further colour or round is begun; the positions reached are the result.
 // Results do not depend on the thread count: each region's solve is deterministic, regions of
 // one colour share no vertex, and colours run in a fixed order.
 
@@ -31,6 +33,7 @@ SolveMode choose_mode(const PreparedProblem<D>& prepared, const SimplexAssemblyO
 /// Fills result.positions (original units) and result.submesh.
 template <int D>
 void solve_submeshes(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& options,
-                     const SimplexAssemblyObserver& observer, SimplexAssemblyResult& result);
+                     const TimeBudget& budget, const SimplexAssemblyObserver& observer,
+                     SimplexAssemblyResult& result);
 
 }  // namespace sa

@@ -50,7 +50,8 @@ std::vector<Index> bad_simplices(const PreparedProblem<D>& p, const std::vector<
 }
 
 template <int D>
-SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& options) {
+SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& options,
+                           const TimeBudget& budget) {
     const MappingProblem& input = *p.input;
     const Index rows = p.mesh.num_vertices();
     SubmeshStart start;
@@ -109,7 +110,7 @@ SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& 
         const std::string label = std::string(name) + " iteration " + std::to_string(iteration);
         A = linear_parts<D>(p.mesh, p.frames, x);
         if (keep_if_better(x, A, label)) last_improvement = iteration;
-        if (done() || iteration - last_improvement > patience) break;
+        if (done() || iteration - last_improvement > patience || budget.exhausted()) break;
         double energy = fit_rigid_parts<D>(p.frames, A, similarity, M);
         if (!(energy <= previous)) {  // the accelerated point raised Q: take the plain step
             ++start.rejected;
@@ -129,7 +130,9 @@ SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& 
 
 template std::vector<Index> bad_simplices<2>(const PreparedProblem<2>&, const std::vector<Mat<2>>&);
 template std::vector<Index> bad_simplices<3>(const PreparedProblem<3>&, const std::vector<Mat<3>>&);
-template SubmeshStart submesh_start<2>(PreparedProblem<2>&, const SimplexAssemblyOptions&);
-template SubmeshStart submesh_start<3>(PreparedProblem<3>&, const SimplexAssemblyOptions&);
+template SubmeshStart submesh_start<2>(PreparedProblem<2>&, const SimplexAssemblyOptions&,
+                                       const TimeBudget&);
+template SubmeshStart submesh_start<3>(PreparedProblem<3>&, const SimplexAssemblyOptions&,
+                                       const TimeBudget&);
 
 }  // namespace sa

@@ -42,7 +42,9 @@ struct SubmeshStart {
 template <int D>
 std::vector<Index> bad_simplices(const PreparedProblem<D>& p, const std::vector<Mat<D>>& A);
 
+/// Stops its iterations, keeping the best iterate so far, when `budget` runs out.
 template <int D>
-SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& options);
+SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& options,
+                           const TimeBudget& budget);
 
 }  // namespace sa

@@ -130,6 +130,53 @@ TEST(SubmeshMode, TheStartSpreadsALargeHandleRotation) {
     EXPECT_GT(d.submesh.solves, 0);
 }
 
+// A bar whose top face is pulled through its fixed bottom: far from valid after one step.
+MappingProblem pulled_through_bar() {
+    MappingProblem p;
+    p.mesh = grid_tetrahedra(3, 3, 12);
+    p.initial = p.mesh.vertices;
+    const double top = p.mesh.vertices.col(2).maxCoeff();
+    for (Index v = 0; v < p.mesh.num_vertices(); ++v) {
+        const double z = p.mesh.vertices(v, 2);
+        if (z == 0.0 || z == top) p.handles.push_back(v);
+        if (z == top) p.initial(v, 2) = -1.0;
+    }
+    return p;
+}
+
+// A limit too short for the untangling: the run stops, the output positions are verified as
+// they are, and the summary says why it stopped.
+TEST(TimeLimit, StopsTheFullSolveAndTheSummarySaysSo) {
+    const MappingProblem p = pulled_through_bar();
+    SimplexAssemblyOptions options;
+    options.mode = SolveMode::kFull;
+    options.max_time_seconds = 1e-9;
+    const SimplexAssemblyResult r = run_simplex_assembly(p, options);
+    EXPECT_EQ(r.newton.termination, TerminationType::kMaxTime);
+    EXPECT_EQ(r.newton.num_steps(), 1);
+    EXPECT_FALSE(r.vertex_stage_ran);
+    EXPECT_GT(r.verification.inverted, 0);
+    EXPECT_FALSE(r.success);
+    EXPECT_EQ(r.message.rfind("FAILED: ", 0), 0u) << r.message;
+    EXPECT_NE(r.message.find("time limit"), std::string::npos) << r.message;
+}
+
+TEST(TimeLimit, StopsTheSubmeshStartAndItsRegions) {
+    const MappingProblem p = pulled_through_bar();
+    SimplexAssemblyOptions options;
+    options.mode = SolveMode::kSubmesh;
+    options.auto_full_tetrahedra = 100;  // a large mesh, whose start runs
+    options.max_time_seconds = 1e-9;
+    const SimplexAssemblyResult r = run_simplex_assembly(p, options);
+    EXPECT_GT(r.initial_quality.inverted, 0);
+    EXPECT_LE(r.submesh.start_iterations, 1);
+    EXPECT_EQ(r.submesh.solves, 0);
+    EXPECT_TRUE(r.submesh.out_of_time);
+    EXPECT_GT(r.verification.inverted, 0);
+    EXPECT_FALSE(r.success);
+    EXPECT_NE(r.message.find("stopped at the time limit"), std::string::npos) << r.message;
+}
+
 TEST(SubmeshMode, AutoPicksFullForSmallMeshesAndSubmeshesForLargeOnes) {
     const MappingProblem small = local_folds(grid_triangles(10, 10), {5 * 11 + 5}, 0.15);
     EXPECT_EQ(run_simplex_assembly(small, SimplexAssemblyOptions{}).mode, SolveMode::kFull);
