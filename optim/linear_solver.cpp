@@ -8,9 +8,9 @@
 #include <vector>
 
 #include <amd.h>
-#include <omp.h>
 
 #include "optim/errors.h"
+#include "optim/serial_openmp.h"
 
 namespace sa {
 
@@ -63,23 +63,6 @@ struct SuiteSparseAmdOrdering {
         permutation.resize(n);
         for (int k = 0; k < n; ++k) permutation.indices()(k) = order[k];
     }
-};
-
-/// CHOLMOD 3.0 (Debian 12) runs its OpenMP loops with num_threads(CHOLMOD_OMP_NUM_THREADS), a
-/// constant 4 fixed when it was compiled, whatever OMP_NUM_THREADS says: on 2 cores the extra
-/// threads spin and wait on futexes. With dynamic adjustment, the OpenMP runtime gives a loop no
-/// more threads than there are idle cores. Measured on tlc/stgc-3d's full Hessian (16,845
-/// unknowns, 3.6e8 flops): 105 ms per supernodal factorization, 66 ms with it. The setting belongs
-/// to the calling thread; it is made for each call into CHOLMOD and the caller's restored after.
-class DynamicOpenMPThreads {
-  public:
-    DynamicOpenMPThreads() : previous_(omp_get_dynamic()) { omp_set_dynamic(1); }
-    ~DynamicOpenMPThreads() { omp_set_dynamic(previous_); }
-    DynamicOpenMPThreads(const DynamicOpenMPThreads&) = delete;
-    DynamicOpenMPThreads& operator=(const DynamicOpenMPThreads&) = delete;
-
-  private:
-    int previous_;
 };
 
 using CholmodSupernodal = Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>;
@@ -148,7 +131,7 @@ struct LinearSolver::Impl {
     template <class Cholmod>
     FactorizationStatus factorize_cholmod(Cholmod& solver, const SparseMatrix& lower) {
         {
-            const DynamicOpenMPThreads threads;
+            const SerialOpenMP serial;
             solver.factorize(lower);
         }
         const int status = solver.cholmod().status;
@@ -195,7 +178,7 @@ void LinearSolver::analyze(const SparseMatrix& lower) {
         throw InvalidArgumentError("linear solver: matrix is " + std::to_string(lower.rows()) +
                                    " x " + std::to_string(lower.cols()) + ", not square");
     }
-    const DynamicOpenMPThreads threads;
+    const SerialOpenMP serial;
     if (impl_->requested == LinearSolverType::kAuto)
         impl_->make(LinearSolverType::kCholmodSupernodal);
     switch (impl_->type) {
@@ -239,7 +222,7 @@ Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& rhs) const {
 }
 
 Eigen::MatrixXd LinearSolver::solve_columns(const Eigen::MatrixXd& rhs) const {
-    const DynamicOpenMPThreads threads;
+    const SerialOpenMP serial;
     switch (impl_->type) {
         case LinearSolverType::kCholmodSupernodal:
             return impl_->supernodal->solve(rhs);

@@ -9,12 +9,14 @@
 //                        times faster than with Eigen's own AMD, for the same fill).
 //   kAuto                kEigenLDLT when CHOLMOD's analysis counts fewer than kAutoSupernodalFlops
 //                        for the factorization (the supernodes are then too small for BLAS-3 to
-//                        pay), kCholmodSupernodal otherwise. Measured per factorization, with
-//                        CHOLMOD's threads sized as in linear_solver.cpp and one OpenBLAS thread
-//                        (the sa command's setting): tlc/param2d, 8,090 unknowns, 2.1e7 flops:
-//                        7.9 ms supernodal, 7.8 ms LDLT; a 2,937-unknown 3D submesh of
-//                        tlc/stgc-3d, 2.7e7 flops: 4.4 and 8.1 ms; stgc-3d's full system, 16,845
-//                        unknowns, 3.6e8 flops: 50 and 102 ms.
+//                        pay), kCholmodSupernodal otherwise. Measured per factorization, CHOLMOD
+//                        run serially (optim/serial_openmp.h), one OpenBLAS thread (the sa
+//                        command's setting): tlc/param2d, 8,090 unknowns, 2.1e7 flops: 4.3 ms
+//                        supernodal, 7.7 ms LDLT; a 2,937-unknown 3D submesh of tlc/stgc-3d,
+//                        2.7e7 flops: 2.6 and 7.5 ms; stgc-3d's full system, 16,845 unknowns,
+//                        3.6e8 flops: 33 and 99 ms; leading 8,000 unknowns of it, 9.7e6 flops:
+//                        2.6 and 4.0 ms; 4,000 unknowns of param2d's, 7.9e5 flops: 0.69 and 0.57
+//                        ms. CHOLMOD's parallel regions run serially inside every call.
 // The symbolic analysis (fill-reducing ordering) is done by analyze() and reused by every
 // factorize() until analyze() is called again. CHOLMOD's ordering is chosen by FillOrdering:
 //   kBest   CHOLMOD's default: AMD, then METIS when AMD's fill is large, the better kept. Pays off
@@ -37,7 +39,7 @@ std::string to_string(LinearSolverType type);
 /// "cholmod-supernodal", "cholmod-simplicial" or "eigen-ldlt"; throws InvalidArgumentError.
 LinearSolverType parse_linear_solver(const std::string& name);
 
-inline constexpr double kAutoSupernodalFlops = 2.5e7;
+inline constexpr double kAutoSupernodalFlops = 2e6;
 
 enum class FillOrdering { kBest, kAmd };
 

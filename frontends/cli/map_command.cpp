@@ -89,7 +89,7 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
     map->add_option("--max-rounds", a.max_rounds, "submesh mode: rounds after the first (l_max)")
         ->capture_default_str();
     map->add_option("--linear-solver", a.linear_solver,
-                    "auto (Eigen LDL^T below 2.5e7 factorization flops by CHOLMOD's count, CHOLMOD "
+                    "auto (Eigen LDL^T below 2e6 factorization flops by CHOLMOD's count, CHOLMOD "
                     "supernodal above), "
                     "cholmod-supernodal, cholmod-simplicial or eigen-ldlt")
         ->capture_default_str();
