@@ -19,7 +19,8 @@
 // When options.max_time_seconds runs out, the start stops at its best iterate so far and no
 // further colour or round is begun; the positions reached are the result.
 // Results do not depend on the thread count: each region's solve is deterministic, regions of
-// one colour share no vertex, and colours run in a fixed order.
+// one colour share no vertex, and colours run in a fixed order. (With a time limit, where the run
+// stops depends on the machine's speed.)
 
 #include "frontends/simplex_assembly/prepared_problem.h"
 
