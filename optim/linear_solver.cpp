@@ -124,7 +124,7 @@ struct LinearSolver::Impl {
                 ldlt.emplace();
                 break;
             case LinearSolverType::kAuto:
-                break;  // chosen by analyze(), from the size
+                break;  // chosen by analyze(), from CHOLMOD's flop count
         }
     }
 

@@ -26,16 +26,21 @@ GompParallel runtime_parallel() {
 
 }  // namespace
 
-SerialOpenMP::SerialOpenMP() { ++serial_depth; }
-SerialOpenMP::~SerialOpenMP() { --serial_depth; }
+SerialOpenMP::SerialOpenMP() {
+    ++serial_depth;
+}
+SerialOpenMP::~SerialOpenMP() {
+    --serial_depth;
+}
 
-long serial_openmp_regions() { return serial_regions.load(std::memory_order_relaxed); }
+long serial_openmp_regions() {
+    return serial_regions.load(std::memory_order_relaxed);
+}
 
 }  // namespace sa
 
 /// The entry point of `#pragma omp parallel` in GCC's OpenMP ABI (libgomp's GOMP_4.0 version).
-extern "C" void GOMP_parallel(void (*fn)(void*), void* data, unsigned num_threads,
-                              unsigned flags) {
+extern "C" void GOMP_parallel(void (*fn)(void*), void* data, unsigned num_threads, unsigned flags) {
     if (sa::serial_depth > 0) {
         sa::serial_regions.fetch_add(1, std::memory_order_relaxed);
         fn(data);

@@ -162,9 +162,9 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
         for (Index s : in.anchored_simplices) {
             for (int k = 0; k <= D; ++k) fixed[mesh.simplices(s, k)] = 1;
         }
-        VertexStage vertex = run_vertex_stage<D>(mesh, frames, *prepared.energy, recovered, fixed,
-                                                 with_time_left(options, budget), observer.logger,
-                                                 in.fans);
+        VertexStage vertex =
+            run_vertex_stage<D>(mesh, frames, *prepared.energy, recovered, fixed,
+                                with_time_left(options, budget), observer.logger, in.fans);
         result.vertex_stage_ran = vertex.ran;
         result.vertex_stage_note = vertex.note;
         result.vertex_stage = vertex.newton;

@@ -175,8 +175,8 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
                     tbb::parallel_for(std::size_t(0), members.size(), [&](std::size_t i) {
                         solved[i] = solve_region(
                             input, p.topology, positions, is_handle, pending[members[i]],
-                            with_time_left(options, budget),
-                            inner, members.size() == 1 ? observer.logger : Logger{}, subs[i]);
+                            with_time_left(options, budget), inner,
+                            members.size() == 1 ? observer.logger : Logger{}, subs[i]);
                     });
                 });
                 for (std::size_t i = 0; i < members.size(); ++i) {
@@ -247,10 +247,9 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
         for (Index s : p.assembly.anchored_simplices) {
             for (int k = 0; k <= D; ++k) fixed[p.mesh.simplices(s, k)] = 1;
         }
-        VertexStage vertex = run_vertex_stage<D>(p.mesh, p.frames, *p.energy,
-                                                 (positions.rowwise() - p.map_center) * p.scale,
-                                                 fixed, with_time_left(options, budget),
-                                                 observer.logger);
+        VertexStage vertex = run_vertex_stage<D>(
+            p.mesh, p.frames, *p.energy, (positions.rowwise() - p.map_center) * p.scale, fixed,
+            with_time_left(options, budget), observer.logger);
         result.vertex_stage_ran = vertex.ran;
         result.vertex_stage_note = vertex.note;
         result.vertex_stage = vertex.newton;
