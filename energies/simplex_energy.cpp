@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "energies/polynomial_roots.h"
+#include "energies/rotation_invariant_projection.h"
 #include "optim/errors.h"
 
 namespace sa {
@@ -125,6 +126,12 @@ double SimplexEnergy<D>::value_gradient_hessian(Index i, const Vec<arity>& a, Ve
     gradient = e.gradient;
     hessian = e.hessian;
     return std::isfinite(e.value) ? e.value : kInfinity;
+}
+
+template <int D>
+bool SimplexEnergy<D>::project_hessian(Index, const Vec<arity>& a, Mat<arity>& hessian,
+                                       ProjectionMode mode, double epsilon) const {
+    return project_rotation_invariant_hessian<D>(unvec<D>(a), hessian, mode, epsilon);
 }
 
 template <int D>

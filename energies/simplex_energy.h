@@ -15,6 +15,7 @@
 
 #include "energies/barrier.h"
 #include "energies/distortion.h"
+#include "optim/hessian_projection.h"
 
 namespace sa {
 
@@ -47,6 +48,10 @@ class SimplexEnergy {
     double value_gradient_hessian(Index i, const Vec<arity>& a, Vec<arity>& gradient,
                                   Mat<arity>& hessian) const;
     double max_step(Index i, const Vec<arity>& a, const Vec<arity>& da) const;
+    /// Projects the Hessian at `a` in place through the singular vectors of A
+    /// (rotation_invariant_projection.h: every barrier and mapping distortion here qualifies).
+    bool project_hessian(Index i, const Vec<arity>& a, Mat<arity>& hessian, ProjectionMode mode,
+                         double epsilon) const;
 
     /// The same energy on the simplices `selected` only: element k of the result is simplex
     /// selected[k] of this one.

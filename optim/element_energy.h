@@ -27,9 +27,11 @@
 //       assembly was a large part of a small solve's setup (a 300-tetrahedron submesh: 35 ms
 //       with the projection, 27 ms without).
 //   double value_gradient(Index element, const Vec<N>& x, Vec<N>& gradient) const;
-//   void project_hessian(Index element, const Vec<N>& x, Mat<N>& hessian) const;
-//       A closed-form positive-definite projection of the element's Hessian, used instead of the
-//       eigen-decomposition of HessianProjection.
+//   bool project_hessian(Index element, const Vec<N>& x, Mat<N>& hessian, ProjectionMode mode,
+//                        double epsilon) const;
+//       Projects the element's Hessian at x in place as project_hessian_block() would (same
+//       modes and epsilon) but faster, from what the energy knows about its structure; returns
+//       true when it changed the Hessian.
 //
 // Per-element rest data (areas, inverse rest matrices, ...) lives in the energy object and is
 // indexed by the element number passed to every call. Calls are made concurrently from several
@@ -38,6 +40,7 @@
 #include <concepts>
 #include <type_traits>
 
+#include "optim/hessian_projection.h"
 #include "optim/types.h"
 
 namespace sa {
@@ -62,9 +65,9 @@ concept HasValueGradient = requires(const E& e, Index i, const Vec<E::arity>& x,
 };
 
 template <class E>
-concept HasClosedFormProjection = requires(const E& e, Index i, const Vec<E::arity>& x,
-                                           Mat<E::arity>& h) {
-    {e.project_hessian(i, x, h)};
+concept HasOwnProjection = requires(const E& e, Index i, const Vec<E::arity>& x, Mat<E::arity>& h,
+                                    ProjectionMode mode) {
+    { e.project_hessian(i, x, h, mode, 0.0) } -> std::convertible_to<bool>;
 };
 
 template <class E>

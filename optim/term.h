@@ -148,10 +148,8 @@ class EnergyTerm final : public Term {
                     Eigen::Map<Mat<N>> slot(hessian_slots + std::size_t(e) * N * N);
                     Mat<N> h = slot;
                     bool did;
-                    if constexpr (HasClosedFormProjection<E>) {
-                        const Mat<N> before = h;
-                        energy_.project_hessian(e, gather(x, e), h);
-                        did = h != before;
+                    if constexpr (HasOwnProjection<E>) {
+                        did = energy_.project_hessian(e, gather(x, e), h, mode, epsilon);
                     } else {
                         did = project_hessian_block<N>(h, mode, epsilon);
                     }
