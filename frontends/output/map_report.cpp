@@ -108,6 +108,7 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
                           {"steiner_tree_edges", r.num_tree_edges},
                           {"anchored_simplices", r.num_anchored_simplices},
                           {"newton_termination", to_string(r.newton.termination)},
+                          {"stopped_because", r.assembly_stop},
                           {"newton_message", r.newton.message}};
     report["vertex_stage"] = {{"ran", r.vertex_stage_ran},
                               {"note", r.vertex_stage_note},

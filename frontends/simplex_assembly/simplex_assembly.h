@@ -124,6 +124,9 @@ struct SimplexAssemblyResult {
     MapQuality initial_quality;  ///< of the initial map
     MapQuality final_quality;    ///< of the output positions
     NewtonSummary newton;        ///< the assembly stage
+    /// Why the assembly stage stopped early, when it did (empty otherwise): the recovered map
+    /// was valid (until_valid) or good enough to hand over, or E stopped changing at lambda_max.
+    std::string assembly_stop;
     std::vector<AssemblyRecord> iterations;
     bool vertex_stage_ran = false;  ///< the vertex stage ran
     std::string vertex_stage_note;  ///< how it ended, or why it did not run

@@ -88,7 +88,9 @@ struct SimplexAssemblyOptions {
     bool until_valid = false;
 
     // Termination: E~_assembly below assembly_tolerance and the relative change of E within a
-    // step below energy_tolerance, or limits (each stage has max_iterations).
+    // step below energy_tolerance (the paper's), or lambda at lambda_max and that same change
+    // below energy_tolerance (ours: the weights no longer move, so E has converged without
+    // assembling), or limits (each stage has max_iterations).
     double assembly_tolerance = 1e-12;
     double energy_tolerance = 1e-8;
     int max_iterations = 200;

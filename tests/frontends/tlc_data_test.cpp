@@ -27,6 +27,28 @@ TEST_P(TlcProblem, UntanglesAndVerifies) {
     EXPECT_LE(r.verification.handle_error, r.verification.handle_tolerance);
 }
 
+// stgc-3d's full solve cannot assemble: E~ stays at 2.2e-5 once lambda reaches lambda_max. It
+// must stop there when E stops changing rather than run on to the iteration limit, and still
+// hand a verified map over.
+TEST(TlcFullSolve, StopsAtLambdaMaxWhenEConverges) {
+    const std::string path = std::string(SA_DATA_DIR) + "/tlc/stgc-3d/input";
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is absent";
+    const MeshFile file = read_problem(path);
+    MappingProblem p;
+    p.mesh = file.mesh;
+    p.initial = *file.initial;
+    p.handles = file.handles;
+    p.source = path;
+    SimplexAssemblyOptions options;
+    options.mode = SolveMode::kFull;
+    const SimplexAssemblyResult r = run_simplex_assembly(p, options);
+    EXPECT_TRUE(r.success) << r.message;
+    EXPECT_FALSE(r.assembled);
+    EXPECT_EQ(r.assembly_stop, "E converged at lambda_max") << r.message;
+    EXPECT_EQ(r.final_lambda, options.lambda_max);
+    EXPECT_LT(r.newton.num_steps(), 60);
+}
+
 INSTANTIATE_TEST_SUITE_P(Tlc, TlcProblem,
                          ::testing::Values("stgc-2d", "sea-2d", "param2d", "cube", "stgc-3d"),
                          [](const auto& info) {
