@@ -23,8 +23,16 @@ void apply_runtime_settings() {
     if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
     // Looked up rather than linked: the BLAS behind CHOLMOD is chosen by Debian's alternatives.
     using SetThreads = void (*)(int);
-    if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
-        set(1);
+    auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+    if (set == nullptr) return;
+    set(1);
+    // OpenBLAS started its worker threads when it was loaded, before main. With one thread they
+    // get no work, but each spins on sched_yield before it sleeps and competes with TBB's workers
+    // for the cores. blas_thread_shutdown_ (OpenBLAS's own, for fork) joins them; a later
+    // openblas_set_num_threads(n > 1) starts them again.
+    using Shutdown = int (*)();
+    if (auto shutdown = reinterpret_cast<Shutdown>(dlsym(RTLD_DEFAULT, "blas_thread_shutdown_")))
+        shutdown();
 }
 
 }  // namespace sa::cli
