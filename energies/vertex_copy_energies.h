@@ -36,6 +36,23 @@ class VertexSimplexEnergy {
         h = L.transpose() * ha * L;
         return v;
     }
+    /// Projects in A: the Hessian is L^T H_A L with L = map(i), and L^T P(H_A) L is positive
+    /// semidefinite whenever P(H_A) is (Smith, De Goes and Kim 2019 do the same). It is not the
+    /// eigenvalue projection of the D(D+1) x D(D+1) block: L's null space (translations of the
+    /// simplex) keeps eigenvalue 0 instead of epsilon, and the rest is clamped in A's metric.
+    /// One 9 x 9 (4 x 4) projection through the singular vectors of A instead of a 12 x 12
+    /// (6 x 6) eigen-decomposition.
+    bool project_hessian(Index i, const Vec<arity>& x, Mat<arity>& h, ProjectionMode mode,
+                         double epsilon) const {
+        const Eigen::Matrix<double, kA, arity> L = map(i);
+        const Vec<kA> a = L * x;
+        Vec<kA> ga;
+        Mat<kA> ha;
+        energy_.value_gradient_hessian(i, a, ga, ha);
+        if (!energy_.project_hessian(i, a, ha, mode, epsilon)) return false;
+        h = L.transpose() * ha * L;
+        return true;
+    }
     double max_step(Index i, const Vec<arity>& x, const Vec<arity>& dx) const {
         const Eigen::Matrix<double, kA, arity> L = map(i);
         return energy_.max_step(i, L * x, L * dx);

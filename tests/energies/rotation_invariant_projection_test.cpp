@@ -5,6 +5,7 @@
 #include <random>
 
 #include "energies/simplex_energy.h"
+#include "energies/vertex_copy_energies.h"
 
 namespace sa {
 namespace {
@@ -106,6 +107,36 @@ TEST(RotationInvariantProjection, ResultIsPositiveDefinite) {
     const double scale = h.norm();
     ASSERT_TRUE(energy.project_hessian(0, vec<3>(A), h, ProjectionMode::kClamp, 1e-6));
     EXPECT_GE(Eigen::SelfAdjointEigenSolver<Mat<9>>(h).eigenvalues()(0), 1e-6 - 1e-12 * scale);
+}
+
+// The vertex-copy energy projects in A: L^T P(H_A) L, positive semidefinite, with L's null space
+// (the tetrahedron's translations) left at eigenvalue 0.
+TEST(RotationInvariantProjection, VertexEnergyProjectsInA) {
+    std::mt19937 rng(5);
+    const Mat<3> rest_inverse = matrix_with_singular_values<3>(Vec<3>(1.2, 0.7, 0.9), rng);
+    const VertexSimplexEnergy<3> energy(SimplexEnergy<3>(SimplexEnergyOptions{}, {1.0}),
+                                        {rest_inverse});
+    // Copies x_0 = 0, x_1..x_3 the columns of A R with a stretched A, whose barrier Hessian is
+    // indefinite.
+    const Mat<3> A = matrix_with_singular_values<3>(Vec<3>(2.5, 0.4, 0.9), rng);
+    const Mat<3> edges = A * rest_inverse.inverse();
+    Vec<12> x = Vec<12>::Zero();
+    for (int c = 0; c < 3; ++c) x.segment<3>(3 * (c + 1)) = edges.col(c);
+    Vec<12> g;
+    Mat<12> h;
+    energy.value_gradient_hessian(0, x, g, h);
+    const double scale = h.norm();
+    ASSERT_LT(Eigen::SelfAdjointEigenSolver<Mat<12>>(h).eigenvalues()(0), -1e-6 * scale);
+    ASSERT_TRUE(energy.project_hessian(0, x, h, ProjectionMode::kClamp, 1e-8));
+    const Vec<12> eigenvalues = Eigen::SelfAdjointEigenSolver<Mat<12>>(h).eigenvalues();
+    EXPECT_GE(eigenvalues(0), -1e-12 * scale);
+    EXPECT_LE(eigenvalues(2), 1e-12 * scale);  // three translations
+    EXPECT_GT(eigenvalues(3), 1e-9);
+
+    // Translating every copy changes nothing.
+    Vec<12> shift;
+    for (int k = 0; k < 4; ++k) shift.segment<3>(3 * k) = Vec<3>(0.3, -1.0, 2.0);
+    EXPECT_LE((h * shift).norm(), 1e-12 * scale);
 }
 
 TEST(RotationInvariantProjection, InvertedMatrixFallsBackToEigenDecomposition) {
