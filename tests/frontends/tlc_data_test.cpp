@@ -10,18 +10,26 @@
 namespace sa {
 namespace {
 
-class TlcProblem : public ::testing::TestWithParam<const char*> {};
+std::string tlc_path(const std::string& name) {
+    return std::string(SA_DATA_DIR) + "/tlc/" + name + "/input";
+}
 
-TEST_P(TlcProblem, UntanglesAndVerifies) {
-    const std::string path = std::string(SA_DATA_DIR) + "/tlc/" + GetParam() + "/input";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is absent";
+MappingProblem read_tlc(const std::string& path) {
     const MeshFile file = read_problem(path);
     MappingProblem p;
     p.mesh = file.mesh;
     p.initial = *file.initial;
     p.handles = file.handles;
     p.source = path;
-    const SimplexAssemblyResult r = run_simplex_assembly(p, SimplexAssemblyOptions{});
+    return p;
+}
+
+class TlcProblem : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(TlcProblem, UntanglesAndVerifies) {
+    const std::string path = tlc_path(GetParam());
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is absent";
+    const SimplexAssemblyResult r = run_simplex_assembly(read_tlc(path), SimplexAssemblyOptions{});
     EXPECT_TRUE(r.success) << r.message;
     EXPECT_EQ(r.verification.inverted, 0);
     EXPECT_LE(r.verification.handle_error, r.verification.handle_tolerance);
@@ -31,17 +39,11 @@ TEST_P(TlcProblem, UntanglesAndVerifies) {
 // must stop there when E stops changing rather than run on to the iteration limit, and still
 // hand a verified map over.
 TEST(TlcFullSolve, StopsAtLambdaMaxWhenEConverges) {
-    const std::string path = std::string(SA_DATA_DIR) + "/tlc/stgc-3d/input";
+    const std::string path = tlc_path("stgc-3d");
     if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is absent";
-    const MeshFile file = read_problem(path);
-    MappingProblem p;
-    p.mesh = file.mesh;
-    p.initial = *file.initial;
-    p.handles = file.handles;
-    p.source = path;
     SimplexAssemblyOptions options;
     options.mode = SolveMode::kFull;
-    const SimplexAssemblyResult r = run_simplex_assembly(p, options);
+    const SimplexAssemblyResult r = run_simplex_assembly(read_tlc(path), options);
     EXPECT_TRUE(r.success) << r.message;
     EXPECT_FALSE(r.assembled);
     EXPECT_EQ(r.assembly_stop, "E converged at lambda_max") << r.message;
