@@ -8,6 +8,7 @@
 #include <limits>
 #include <sstream>
 
+#include "optim/prefault.h"
 #include "optim/stopwatch.h"
 
 namespace sa {
@@ -70,8 +71,8 @@ HessianAssembler::HessianAssembler(const Problem& problem)
         hessian_offset_[t] = term.is_quadratic() ? -1 : hessian_size;
         if (!term.is_quadratic()) hessian_size += ne * N * N;
     }
-    gradient_slots_.resize(gradient_size);
-    hessian_slots_.resize(hessian_size);
+    assign_prefaulted(gradient_slots_, std::size_t(gradient_size), 0.0);
+    assign_prefaulted(hessian_slots_, std::size_t(hessian_size), 0.0);
 
     // Incidences of each free variable, ordered by (term, element, local index).
     std::vector<std::int64_t> incidence_begin(nf + 1, 0);
@@ -103,7 +104,7 @@ HessianAssembler::HessianAssembler(const Problem& problem)
 
     // Gradient gather lists: the incidences themselves.
     gradient_source_begin_ = incidence_begin;
-    gradient_source_.resize(incidences.size());
+    assign_prefaulted(gradient_source_, incidences.size(), std::int64_t{0});
     tbb::parallel_for(std::size_t(0), incidences.size(), [&](std::size_t p) {
         const Incidence& in = incidences[p];
         gradient_source_[p] = gradient_offset_[in.term] +
@@ -119,8 +120,10 @@ HessianAssembler::HessianAssembler(const Problem& problem)
         const Term& term = problem.term(t);
         if (!term.is_quadratic()) continue;
         const std::size_t N = std::size_t(term.arity());
-        std::vector<double> g(std::size_t(term.num_elements()) * N);
-        std::vector<double>& h = quadratic_hessians.emplace_back(g.size() * N);
+        std::vector<double> g;
+        assign_prefaulted(g, std::size_t(term.num_elements()) * N, 0.0);
+        std::vector<double>& h = quadratic_hessians.emplace_back();
+        assign_prefaulted(h, g.size() * N, 0.0);
         term.evaluate(x, 1.0, g.data(), h.data());
         if (!term.is_convex()) term.project(x, h.data(), ProjectionMode::kClamp, 0.0);
         quadratic_index[t] = static_cast<int>(quadratic_parts_.size());
@@ -196,12 +199,14 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     }
     hessian_.resize(nf, nf);
     hessian_.resizeNonZeros(static_cast<Index>(nnz));
+    prefault(hessian_.valuePtr(), std::size_t(nnz) * sizeof(double));
+    prefault(hessian_.innerIndexPtr(), std::size_t(nnz) * sizeof(int));
     for (Index j = 0; j <= nf; ++j) hessian_.outerIndexPtr()[j] = static_cast<int>(column_begin[j]);
     int* const pattern = hessian_.innerIndexPtr();
 
     // Pass 2: the pattern; the number of non-quadratic contributions to each entry, and of the
     // entries of each column that each quadratic term touches.
-    entry_source_begin_.assign(nnz + 1, 0);
+    assign_prefaulted(entry_source_begin_, std::size_t(nnz + 1), std::int64_t{0});
     std::vector<std::vector<std::int64_t>> quadratic_begin(num_quadratic,
                                                            std::vector<std::int64_t>(nf + 1, 0));
     tbb::parallel_for(
@@ -229,7 +234,7 @@ HessianAssembler::HessianAssembler(const Problem& problem)
             }
         });
     counts_to_offsets(entry_source_begin_);
-    entry_source_.resize(entry_source_begin_[nnz]);
+    assign_prefaulted(entry_source_, std::size_t(entry_source_begin_[nnz]), std::int64_t{0});
     for (std::size_t q = 0; q < num_quadratic; ++q) {
         counts_to_offsets(quadratic_begin[q]);
         quadratic_parts_[q].position.resize(quadratic_begin[q][nf]);
