@@ -2,6 +2,7 @@
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
+#include <algorithm>
 #include <new>
 #include <optional>
 #include <type_traits>
@@ -65,7 +66,11 @@ struct SuiteSparseAmdOrdering {
     }
 };
 
-using CholmodSupernodal = Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower>;
+/// Eigen's supernodal LL^T with CHOLMOD's factor in reach (for its fill-reducing permutation).
+class CholmodSupernodal : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> {
+  public:
+    const cholmod_factor* factor() const { return m_cholmodFactor; }
+};
 using CholmodSimplicial = Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower>;
 using EigenLDLT = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, SuiteSparseAmdOrdering>;
 
@@ -87,6 +92,86 @@ void relax_supernodes(cholmod_common& common) {
     common.nrelax[2] = 128;
 }
 
+/// The supernodal factorization of P A P^T for a fixed fill-reducing permutation P, assembled by a
+/// fixed scatter of A's values and factored with CHOLMOD's natural ordering. Given A's lower
+/// triangle and a permutation, cholmod_factorize transposes the matrix twice at every call
+/// (triu(PAP'), then its transpose: cholmod_transpose_sym was 7% of tlc/stgc-3d's full solve
+/// under perf); given the lower triangle of an already permuted matrix with the natural ordering
+/// it factors the matrix as it is. The solves permute the right-hand sides and solutions.
+struct PrepermutedSupernodal {
+    CholmodSupernodal solver;  ///< analyzed with the natural ordering
+    SparseMatrix permuted;     ///< lower triangle of P A P^T
+    std::vector<int> target;   ///< entry k of A's lower triangle -> entry of `permuted`
+    std::vector<int> pivot;    ///< pivot[k] = the row of A that is row k of P A P^T
+
+    /// The pattern of P A P^T, with `order` CHOLMOD's permutation (order[k] = k-th pivot).
+    PrepermutedSupernodal(const SparseMatrix& lower, const int* order) {
+        const int n = static_cast<int>(lower.cols());
+        pivot.assign(order, order + n);
+        std::vector<int> position(n);
+        for (int k = 0; k < n; ++k) position[pivot[k]] = k;
+        // Entry (i, j) of A goes to (max, min) of (position[i], position[j]): count per column,
+        // then place the entries of each new column in row order.
+        const int* outer = lower.outerIndexPtr();
+        const int* rows = lower.innerIndexPtr();
+        std::vector<int> begin(n + 1, 0);
+        for (int j = 0; j < n; ++j) {
+            for (int p = outer[j]; p < outer[j + 1]; ++p)
+                ++begin[std::min(position[rows[p]], position[j]) + 1];
+        }
+        for (int j = 0; j < n; ++j) begin[j + 1] += begin[j];
+        std::vector<std::pair<int, int>> entries(begin[n]);  // (new row, entry of A)
+        {
+            std::vector<int> cursor(begin.begin(), begin.end() - 1);
+            for (int j = 0; j < n; ++j) {
+                for (int p = outer[j]; p < outer[j + 1]; ++p) {
+                    const int a = position[rows[p]], b = position[j];
+                    entries[cursor[std::min(a, b)]++] = {std::max(a, b), p};
+                }
+            }
+        }
+        permuted.resize(n, n);
+        permuted.resizeNonZeros(static_cast<Eigen::Index>(entries.size()));
+        target.resize(entries.size());
+        for (int j = 0; j < n; ++j) {
+            permuted.outerIndexPtr()[j] = begin[j];
+            std::sort(entries.begin() + begin[j], entries.begin() + begin[j + 1]);
+            for (int p = begin[j]; p < begin[j + 1]; ++p) {
+                permuted.innerIndexPtr()[p] = entries[p].first;
+                target[entries[p].second] = p;
+            }
+        }
+        permuted.outerIndexPtr()[n] = begin[n];
+        quiet(solver.cholmod());
+        relax_supernodes(solver.cholmod());
+        solver.cholmod().nmethods = 1;
+        solver.cholmod().method[0].ordering = CHOLMOD_NATURAL;
+        solver.cholmod().postorder = false;
+        solver.analyzePattern(permuted);
+    }
+
+    /// False when CHOLMOD did not keep the natural ordering (the caller then factors A itself).
+    bool natural() const {
+        return solver.info() == Eigen::Success && solver.factor() != nullptr &&
+               solver.factor()->ordering == CHOLMOD_NATURAL;
+    }
+
+    void scatter(const SparseMatrix& lower) {
+        const double* from = lower.valuePtr();
+        double* to = permuted.valuePtr();
+        for (std::size_t k = 0; k < target.size(); ++k) to[target[k]] = from[k];
+    }
+
+    Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const {
+        Eigen::MatrixXd b(rhs.rows(), rhs.cols());
+        for (Eigen::Index k = 0; k < rhs.rows(); ++k) b.row(k) = rhs.row(pivot[k]);
+        const Eigen::MatrixXd y = solver.solve(b);
+        Eigen::MatrixXd x(rhs.rows(), rhs.cols());
+        for (Eigen::Index k = 0; k < rhs.rows(); ++k) x.row(pivot[k]) = y.row(k);
+        return x;
+    }
+};
+
 void set_ordering(cholmod_common& common, FillOrdering ordering) {
     if (ordering == FillOrdering::kAmd) {
         common.nmethods = 1;
@@ -100,6 +185,7 @@ struct LinearSolver::Impl {
     LinearSolverType type;
     FillOrdering ordering = FillOrdering::kBest;
     std::optional<CholmodSupernodal> supernodal;
+    std::optional<PrepermutedSupernodal> prepermuted;  ///< in place of `supernodal`'s factor
     std::optional<CholmodSimplicial> simplicial;
     std::optional<EigenLDLT> ldlt;
     std::string fallback_reason;
@@ -108,6 +194,7 @@ struct LinearSolver::Impl {
     void make(LinearSolverType t) {
         type = t;
         supernodal.reset();
+        prepermuted.reset();
         simplicial.reset();
         ldlt.reset();
         switch (t) {
@@ -128,11 +215,14 @@ struct LinearSolver::Impl {
         }
     }
 
+    /// Factors `input` (A itself, or the permuted copy of PrepermutedSupernodal) with `solver`;
+    /// `lower` is A, for the fallback.
     template <class Cholmod>
-    FactorizationStatus factorize_cholmod(Cholmod& solver, const SparseMatrix& lower) {
+    FactorizationStatus factorize_cholmod(Cholmod& solver, const SparseMatrix& input,
+                                          const SparseMatrix& lower) {
         {
             const SerialOpenMP serial;
-            solver.factorize(lower);
+            solver.factorize(input);
         }
         const int status = solver.cholmod().status;
         if (solver.info() == Eigen::Success && status >= CHOLMOD_OK)
@@ -179,7 +269,9 @@ void LinearSolver::analyze(const SparseMatrix& lower) {
                                    " x " + std::to_string(lower.cols()) + ", not square");
     }
     const SerialOpenMP serial;
-    if (impl_->requested == LinearSolverType::kAuto)
+    // A fresh supernodal solver: the last analysis may have replaced it by a prepermuted one.
+    if (impl_->requested == LinearSolverType::kAuto ||
+        impl_->type == LinearSolverType::kCholmodSupernodal)
         impl_->make(LinearSolverType::kCholmodSupernodal);
     switch (impl_->type) {
         case LinearSolverType::kCholmodSupernodal:
@@ -188,6 +280,17 @@ void LinearSolver::analyze(const SparseMatrix& lower) {
                 impl_->supernodal->cholmod().fl < kAutoSupernodalFlops) {
                 impl_->make(LinearSolverType::kEigenLDLT);
                 impl_->ldlt->analyzePattern(lower);
+            } else if (impl_->ordering == FillOrdering::kBest &&
+                       impl_->supernodal->info() == Eigen::Success &&
+                       impl_->supernodal->factor() != nullptr && lower.cols() > 0) {
+                // Factored many times (a Newton solve): permute once, factor in place.
+                impl_->prepermuted.emplace(
+                    lower, static_cast<const int*>(impl_->supernodal->factor()->Perm));
+                if (impl_->prepermuted->natural()) {
+                    impl_->supernodal.reset();  // its symbolic factor is not needed any more
+                } else {
+                    impl_->prepermuted.reset();
+                }
             }
             break;
         case LinearSolverType::kCholmodSimplicial:
@@ -206,9 +309,14 @@ FactorizationStatus LinearSolver::factorize(const SparseMatrix& lower) {
     if (!impl_->analyzed) throw InvalidArgumentError("linear solver: factorize before analyze");
     switch (impl_->type) {
         case LinearSolverType::kCholmodSupernodal:
-            return impl_->factorize_cholmod(*impl_->supernodal, lower);
+            if (impl_->prepermuted) {
+                impl_->prepermuted->scatter(lower);
+                return impl_->factorize_cholmod(impl_->prepermuted->solver,
+                                                impl_->prepermuted->permuted, lower);
+            }
+            return impl_->factorize_cholmod(*impl_->supernodal, lower, lower);
         case LinearSolverType::kCholmodSimplicial:
-            return impl_->factorize_cholmod(*impl_->simplicial, lower);
+            return impl_->factorize_cholmod(*impl_->simplicial, lower, lower);
         case LinearSolverType::kEigenLDLT:
             return impl_->factorize_ldlt(lower);
         case LinearSolverType::kAuto:
@@ -225,6 +333,7 @@ Eigen::MatrixXd LinearSolver::solve_columns(const Eigen::MatrixXd& rhs) const {
     const SerialOpenMP serial;
     switch (impl_->type) {
         case LinearSolverType::kCholmodSupernodal:
+            if (impl_->prepermuted) return impl_->prepermuted->solve(rhs);
             return impl_->supernodal->solve(rhs);
         case LinearSolverType::kCholmodSimplicial:
             return impl_->simplicial->solve(rhs);

@@ -54,6 +54,20 @@ TEST_P(LinearSolverTest, ReportsAnIndefiniteMatrix) {
     EXPECT_EQ(solver.factorize(laplacian_lower(50, 0.5)), FactorizationStatus::kSuccess);
 }
 
+// A second analysis (another pattern) after factorizations: the supernodal solver factors a
+// permuted copy of the first matrix and must start over.
+TEST_P(LinearSolverTest, AnalyzesAgainForAnotherPattern) {
+    LinearSolver solver(GetParam());
+    solver.analyze(laplacian_lower(300, 0.01));
+    ASSERT_EQ(solver.factorize(laplacian_lower(300, 0.01)), FactorizationStatus::kSuccess);
+    const Eigen::SparseMatrix<double> lower = laplacian_lower(420, 0.02);
+    solver.analyze(lower);
+    ASSERT_EQ(solver.factorize(lower), FactorizationStatus::kSuccess);
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(420, 2.0, -1.0);
+    const Eigen::VectorXd x = solver.solve(b);
+    EXPECT_LT((lower.selfadjointView<Eigen::Lower>() * x - b).norm() / b.norm(), 1e-10);
+}
+
 INSTANTIATE_TEST_SUITE_P(AllSolvers, LinearSolverTest,
                          ::testing::Values(LinearSolverType::kAuto,
                                            LinearSolverType::kCholmodSupernodal,
