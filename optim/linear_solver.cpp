@@ -101,7 +101,7 @@ void relax_supernodes(cholmod_common& common) {
 struct PrepermutedSupernodal {
     CholmodSupernodal solver;  ///< analyzed with the natural ordering
     SparseMatrix permuted;     ///< lower triangle of P A P^T
-    std::vector<int> target;   ///< entry k of A's lower triangle -> entry of `permuted`
+    std::vector<int> target;   ///< entry k of A -> entry of `permuted` (-1: above the diagonal)
     std::vector<int> pivot;    ///< pivot[k] = the row of A that is row k of P A P^T
 
     /// The pattern of P A P^T, with `order` CHOLMOD's permutation (order[k] = k-th pivot).
@@ -111,13 +111,15 @@ struct PrepermutedSupernodal {
         std::vector<int> position(n);
         for (int k = 0; k < n; ++k) position[pivot[k]] = k;
         // Entry (i, j) of A goes to (max, min) of (position[i], position[j]): count per column,
-        // then place the entries of each new column in row order.
+        // then place the entries of each new column in row order. Entries above the diagonal
+        // are ignored, as CHOLMOD ignores them in a lower-triangle matrix.
         const int* outer = lower.outerIndexPtr();
         const int* rows = lower.innerIndexPtr();
         std::vector<int> begin(n + 1, 0);
         for (int j = 0; j < n; ++j) {
-            for (int p = outer[j]; p < outer[j + 1]; ++p)
-                ++begin[std::min(position[rows[p]], position[j]) + 1];
+            for (int p = outer[j]; p < outer[j + 1]; ++p) {
+                if (rows[p] >= j) ++begin[std::min(position[rows[p]], position[j]) + 1];
+            }
         }
         for (int j = 0; j < n; ++j) begin[j + 1] += begin[j];
         std::vector<std::pair<int, int>> entries(begin[n]);  // (new row, entry of A)
@@ -125,6 +127,7 @@ struct PrepermutedSupernodal {
             std::vector<int> cursor(begin.begin(), begin.end() - 1);
             for (int j = 0; j < n; ++j) {
                 for (int p = outer[j]; p < outer[j + 1]; ++p) {
+                    if (rows[p] < j) continue;
                     const int a = position[rows[p]], b = position[j];
                     entries[cursor[std::min(a, b)]++] = {std::max(a, b), p};
                 }
@@ -132,7 +135,7 @@ struct PrepermutedSupernodal {
         }
         permuted.resize(n, n);
         permuted.resizeNonZeros(static_cast<Eigen::Index>(entries.size()));
-        target.resize(entries.size());
+        target.assign(lower.nonZeros(), -1);
         for (int j = 0; j < n; ++j) {
             permuted.outerIndexPtr()[j] = begin[j];
             std::sort(entries.begin() + begin[j], entries.begin() + begin[j + 1]);
@@ -159,7 +162,9 @@ struct PrepermutedSupernodal {
     void scatter(const SparseMatrix& lower) {
         const double* from = lower.valuePtr();
         double* to = permuted.valuePtr();
-        for (std::size_t k = 0; k < target.size(); ++k) to[target[k]] = from[k];
+        for (std::size_t k = 0; k < target.size(); ++k) {
+            if (target[k] >= 0) to[target[k]] = from[k];
+        }
     }
 
     Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const {

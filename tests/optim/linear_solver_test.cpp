@@ -68,6 +68,18 @@ TEST_P(LinearSolverTest, AnalyzesAgainForAnotherPattern) {
     EXPECT_LT((lower.selfadjointView<Eigen::Lower>() * x - b).norm() / b.norm(), 1e-10);
 }
 
+// Entries above the diagonal are ignored, as for a lower triangle.
+TEST_P(LinearSolverTest, IgnoresTheUpperTriangle) {
+    const Eigen::SparseMatrix<double> lower = laplacian_lower(200, 0.05);
+    const Eigen::SparseMatrix<double> full = lower.selfadjointView<Eigen::Lower>();
+    LinearSolver solver(GetParam());
+    solver.analyze(full);
+    ASSERT_EQ(solver.factorize(full), FactorizationStatus::kSuccess);
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(200, -1.0, 3.0);
+    const Eigen::VectorXd x = solver.solve(b);
+    EXPECT_LT((full * x - b).norm() / b.norm(), 1e-10);
+}
+
 INSTANTIATE_TEST_SUITE_P(AllSolvers, LinearSolverTest,
                          ::testing::Values(LinearSolverType::kAuto,
                                            LinearSolverType::kCholmodSupernodal,
