@@ -29,9 +29,10 @@
 //   double value_gradient(Index element, const Vec<N>& x, Vec<N>& gradient) const;
 //   bool project_hessian(Index element, const Vec<N>& x, Mat<N>& hessian, ProjectionMode mode,
 //                        double epsilon) const;
-//       Projects the element's Hessian at x in place as project_hessian_block() would (same
-//       modes and epsilon) but faster, from what the energy knows about its structure; returns
-//       true when it changed the Hessian.
+//       Replaces the element's Hessian at x in place by a positive (semi)definite one, with the
+//       modes and epsilon of project_hessian_block() but faster, from what the energy knows about
+//       its structure; returns true when it changed the Hessian. SimplexEnergy's gives
+//       project_hessian_block()'s result; VertexSimplexEnergy's projects in A instead (see there).
 //
 // Per-element rest data (areas, inverse rest matrices, ...) lives in the energy object and is
 // indexed by the element number passed to every call. Calls are made concurrently from several
