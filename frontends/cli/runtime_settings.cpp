@@ -21,7 +21,8 @@ namespace sa::cli {
 
 void apply_runtime_settings() {
     if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
-    // Looked up rather than linked: the BLAS behind CHOLMOD is chosen by Debian's alternatives.
+    // Looked up rather than called: with SA_STATIC_COMMAND off, the BLAS behind CHOLMOD is the
+    // one Debian's alternatives choose, which need not be OpenBLAS.
     using SetThreads = void (*)(int);
     auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
     if (set == nullptr) return;
