@@ -29,12 +29,16 @@ bool project_rotation_invariant_hessian(const Mat<D>& A, Mat<D * D>& h, Projecti
             }
         }
     }
-    const Mat<N> rotated = basis.transpose() * h * basis;
+    // Only the entries of the rotated Hessian B^T h B that the structure allows are read: the
+    // D x D block of the diagonal directions and the 2 x 2 block of each off-diagonal pair.
+    const Mat<N> h_basis = h * basis;
+    auto rotated = [&](int r, int c) { return basis.col(r).dot(h_basis.col(c)); };
 
     // The D x D block of the diagonal directions E_ii.
     Mat<D> diagonal_block;
     for (int i = 0; i < D; ++i) {
-        for (int k = 0; k < D; ++k) diagonal_block(i, k) = rotated(i + D * i, k + D * k);
+        for (int k = 0; k <= i; ++k)
+            diagonal_block(i, k) = diagonal_block(k, i) = rotated(i + D * i, k + D * k);
     }
     const Eigen::SelfAdjointEigenSolver<Mat<D>> eig(diagonal_block);
     // The flip (a + b) and twist (a - b) eigenvalues of each off-diagonal pair i < j.
@@ -75,17 +79,22 @@ bool project_rotation_invariant_hessian(const Mat<D>& A, Mat<D * D>& h, Projecti
     }
     if (!changed) return false;
 
-    Mat<N> projected = Mat<N>::Zero();  // in the rotated basis
+    // h = B P B^T with P the projected blocks: first B P column by column (each column of P has
+    // at most D nonzeros), then one dense product.
     const Mat<D> block = eig.eigenvectors() * values.asDiagonal() * eig.eigenvectors().transpose();
-    for (int i = 0; i < D; ++i) {
-        for (int k = 0; k < D; ++k) projected(i + D * i, k + D * k) = block(i, k);
+    Mat<N> basis_projected;
+    for (int k = 0; k < D; ++k) {
+        auto column = basis_projected.col(k + D * k);
+        column = basis.col(0) * block(0, k);
+        for (int i = 1; i < D; ++i) column += basis.col(i + D * i) * block(i, k);
     }
     for (int k = 0; k < kPairs; ++k) {
         const int p = first[k], q = second[k];
-        projected(p, p) = projected(q, q) = 0.5 * (flip[k] + twist[k]);
-        projected(p, q) = projected(q, p) = 0.5 * (flip[k] - twist[k]);
+        const double same = 0.5 * (flip[k] + twist[k]), cross = 0.5 * (flip[k] - twist[k]);
+        basis_projected.col(p) = basis.col(p) * same + basis.col(q) * cross;
+        basis_projected.col(q) = basis.col(q) * same + basis.col(p) * cross;
     }
-    h = basis * projected * basis.transpose();
+    h.noalias() = basis_projected * basis.transpose();
     return true;
 }
 

@@ -20,8 +20,10 @@
 // and X_ji). Its eigenvectors are (E_ij + E_ji)/sqrt 2 and (E_ij - E_ji)/sqrt 2 (flip and twist)
 // with eigenvalues a + b and a - b; the rest come from the D x D block.
 //
-// Cost per block: one D x D SVD, two products with the D^2 x D^2 basis each way and a D x D
-// eigenproblem, against the eigen-decomposition of a 4 x 4 (2D) or 9 x 9 (3D) matrix.
+// Cost per block: one D x D SVD, the product h B and from it only the entries of B^T h B that the
+// structure leaves (the D x D block and the 2 x 2 pair blocks), a D x D eigenproblem and, when
+// the block changes, B P B^T with P that sparse; against the eigen-decomposition of a 4 x 4 (2D)
+// or 9 x 9 (3D) matrix.
 
 #include "optim/hessian_projection.h"
 #include "optim/types.h"
