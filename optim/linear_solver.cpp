@@ -70,6 +70,20 @@ struct SuiteSparseAmdOrdering {
 class CholmodSupernodal : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> {
   public:
     const cholmod_factor* factor() const { return m_cholmodFactor; }
+
+    /// Turns the analyzed factor of A, with its permutation P, into that of P A P^T with the
+    /// natural ordering: L's structure already describes P A P^T (L is always the factor of the
+    /// permuted matrix), so only the permutation is reset to the identity.
+    void keep_structure_for_permuted_matrix() {
+        cholmod_factor* L = m_cholmodFactor;
+        int* perm = static_cast<int*>(L->Perm);
+        for (std::size_t k = 0; k < L->n; ++k) perm[k] = static_cast<int>(k);
+        if (L->IPerm != nullptr) {
+            int* inverse = static_cast<int*>(L->IPerm);
+            for (std::size_t k = 0; k < L->n; ++k) inverse[k] = static_cast<int>(k);
+        }
+        L->ordering = CHOLMOD_NATURAL;
+    }
 };
 using CholmodSimplicial = Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower>;
 using EigenLDLT = Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, SuiteSparseAmdOrdering>;
@@ -92,20 +106,20 @@ void relax_supernodes(cholmod_common& common) {
     common.nrelax[2] = 128;
 }
 
-/// The supernodal factorization of P A P^T for a fixed fill-reducing permutation P, assembled by a
-/// fixed scatter of A's values and factored with CHOLMOD's natural ordering. Given A's lower
-/// triangle and a permutation, cholmod_factorize transposes the matrix twice at every call
-/// (triu(PAP'), then its transpose: cholmod_transpose_sym was 7% of tlc/stgc-3d's full solve
-/// under perf); given the lower triangle of an already permuted matrix with the natural ordering
-/// it factors the matrix as it is. The solves permute the right-hand sides and solutions.
-struct PrepermutedSupernodal {
-    CholmodSupernodal solver;  ///< analyzed with the natural ordering
-    SparseMatrix permuted;     ///< lower triangle of P A P^T
-    std::vector<int> target;   ///< entry k of A -> entry of `permuted` (-1: above the diagonal)
-    std::vector<int> pivot;    ///< pivot[k] = the row of A that is row k of P A P^T
+/// The matrix P A P^T for a fixed fill-reducing permutation P, assembled by a fixed scatter of A's
+/// values, for the supernodal factor of A's analysis turned into that of P A P^T with the natural
+/// ordering (CholmodSupernodal::keep_structure_for_permuted_matrix). Given A's lower triangle and
+/// a permutation, cholmod_factorize transposes the matrix twice at every call (triu(PAP'), then
+/// its transpose: cholmod_transpose_sym was 7% of tlc/stgc-3d's full solve under perf); given the
+/// lower triangle of an already permuted matrix with the natural ordering it factors the matrix
+/// as it is. The solves permute the right-hand sides and solutions.
+struct PrepermutedMatrix {
+    SparseMatrix permuted;    ///< lower triangle of P A P^T
+    std::vector<int> target;  ///< entry k of A -> entry of `permuted` (-1: above the diagonal)
+    std::vector<int> pivot;   ///< pivot[k] = the row of A that is row k of P A P^T
 
     /// The pattern of P A P^T, with `order` CHOLMOD's permutation (order[k] = k-th pivot).
-    PrepermutedSupernodal(const SparseMatrix& lower, const int* order) {
+    PrepermutedMatrix(const SparseMatrix& lower, const int* order) {
         const int n = static_cast<int>(lower.cols());
         pivot.assign(order, order + n);
         std::vector<int> position(n);
@@ -145,18 +159,6 @@ struct PrepermutedSupernodal {
             }
         }
         permuted.outerIndexPtr()[n] = begin[n];
-        quiet(solver.cholmod());
-        relax_supernodes(solver.cholmod());
-        solver.cholmod().nmethods = 1;
-        solver.cholmod().method[0].ordering = CHOLMOD_NATURAL;
-        solver.cholmod().postorder = false;
-        solver.analyzePattern(permuted);
-    }
-
-    /// False when CHOLMOD did not keep the natural ordering (the caller then factors A itself).
-    bool natural() const {
-        return solver.info() == Eigen::Success && solver.factor() != nullptr &&
-               solver.factor()->ordering == CHOLMOD_NATURAL;
     }
 
     void scatter(const SparseMatrix& lower) {
@@ -167,7 +169,7 @@ struct PrepermutedSupernodal {
         }
     }
 
-    Eigen::MatrixXd solve(const Eigen::MatrixXd& rhs) const {
+    Eigen::MatrixXd solve(const CholmodSupernodal& solver, const Eigen::MatrixXd& rhs) const {
         Eigen::MatrixXd b(rhs.rows(), rhs.cols());
         for (Eigen::Index k = 0; k < rhs.rows(); ++k) b.row(k) = rhs.row(pivot[k]);
         const Eigen::MatrixXd y = solver.solve(b);
@@ -190,7 +192,7 @@ struct LinearSolver::Impl {
     LinearSolverType type;
     FillOrdering ordering = FillOrdering::kBest;
     std::optional<CholmodSupernodal> supernodal;
-    std::optional<PrepermutedSupernodal> prepermuted;  ///< in place of `supernodal`'s factor
+    std::optional<PrepermutedMatrix> prepermuted;  ///< what `supernodal` factors, when set
     std::optional<CholmodSimplicial> simplicial;
     std::optional<EigenLDLT> ldlt;
     std::string fallback_reason;
@@ -220,7 +222,7 @@ struct LinearSolver::Impl {
         }
     }
 
-    /// Factors `input` (A itself, or the permuted copy of PrepermutedSupernodal) with `solver`;
+    /// Factors `input` (A itself, or the permuted copy of PrepermutedMatrix) with `solver`;
     /// `lower` is A, for the fallback.
     template <class Cholmod>
     FactorizationStatus factorize_cholmod(Cholmod& solver, const SparseMatrix& input,
@@ -291,11 +293,7 @@ void LinearSolver::analyze(const SparseMatrix& lower) {
                 // Factored many times (a Newton solve): permute once, factor in place.
                 impl_->prepermuted.emplace(
                     lower, static_cast<const int*>(impl_->supernodal->factor()->Perm));
-                if (impl_->prepermuted->natural()) {
-                    impl_->supernodal.reset();  // its symbolic factor is not needed any more
-                } else {
-                    impl_->prepermuted.reset();
-                }
+                impl_->supernodal->keep_structure_for_permuted_matrix();
             }
             break;
         case LinearSolverType::kCholmodSimplicial:
@@ -316,8 +314,8 @@ FactorizationStatus LinearSolver::factorize(const SparseMatrix& lower) {
         case LinearSolverType::kCholmodSupernodal:
             if (impl_->prepermuted) {
                 impl_->prepermuted->scatter(lower);
-                return impl_->factorize_cholmod(impl_->prepermuted->solver,
-                                                impl_->prepermuted->permuted, lower);
+                return impl_->factorize_cholmod(*impl_->supernodal, impl_->prepermuted->permuted,
+                                                lower);
             }
             return impl_->factorize_cholmod(*impl_->supernodal, lower, lower);
         case LinearSolverType::kCholmodSimplicial:
@@ -338,7 +336,7 @@ Eigen::MatrixXd LinearSolver::solve_columns(const Eigen::MatrixXd& rhs) const {
     const SerialOpenMP serial;
     switch (impl_->type) {
         case LinearSolverType::kCholmodSupernodal:
-            if (impl_->prepermuted) return impl_->prepermuted->solve(rhs);
+            if (impl_->prepermuted) return impl_->prepermuted->solve(*impl_->supernodal, rhs);
             return impl_->supernodal->solve(rhs);
         case LinearSolverType::kCholmodSimplicial:
             return impl_->simplicial->solve(rhs);
