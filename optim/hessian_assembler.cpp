@@ -40,15 +40,21 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     : problem_id_(problem.id()), structure_version_(problem.structure_version()) {
     const Index n = problem.num_variables();
     const int num_terms = problem.num_terms();
+    // Per term, out of the loops below: its arity and its elements' variables (num_elements x
+    // arity), instead of virtual calls for every incidence.
+    std::vector<int> arity(num_terms);
+    std::vector<const Index*> variables(num_terms);
+    for (TermId t = 0; t < num_terms; ++t) {
+        arity[t] = problem.term(t).arity();
+        variables[t] = problem.term(t).all_element_variables();
+    }
+    auto element_variables = [&](TermId t, Index e) { return variables[t] + e * arity[t]; };
 
     // Free variables: used by some term and not fixed, numbered in variable order.
     std::vector<unsigned char> used(n, 0);
     for (TermId t = 0; t < num_terms; ++t) {
-        const Term& term = problem.term(t);
-        for (Index e = 0; e < term.num_elements(); ++e) {
-            const Index* vars = term.element_variables(e);
-            for (int k = 0; k < term.arity(); ++k) used[vars[k]] = 1;
-        }
+        const Index entries = problem.term(t).num_elements() * arity[t];
+        for (Index k = 0; k < entries; ++k) used[variables[t][k]] = 1;
     }
     free_of_variable_.assign(n, -1);
     for (Index v = 0; v < n; ++v) {
@@ -77,13 +83,10 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     // Incidences of each free variable, ordered by (term, element, local index).
     std::vector<std::int64_t> incidence_begin(nf + 1, 0);
     for (TermId t = 0; t < num_terms; ++t) {
-        const Term& term = problem.term(t);
-        for (Index e = 0; e < term.num_elements(); ++e) {
-            const Index* vars = term.element_variables(e);
-            for (int k = 0; k < term.arity(); ++k) {
-                const Index j = free_of_variable_[vars[k]];
-                if (j >= 0) ++incidence_begin[j];
-            }
+        const Index entries = problem.term(t).num_elements() * arity[t];
+        for (Index k = 0; k < entries; ++k) {
+            const Index j = free_of_variable_[variables[t][k]];
+            if (j >= 0) ++incidence_begin[j];
         }
     }
     counts_to_offsets(incidence_begin);
@@ -91,11 +94,11 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     {
         std::vector<std::int64_t> cursor(incidence_begin.begin(), incidence_begin.end() - 1);
         for (TermId t = 0; t < num_terms; ++t) {
-            const Term& term = problem.term(t);
-            for (Index e = 0; e < term.num_elements(); ++e) {
-                const Index* vars = term.element_variables(e);
-                for (int k = 0; k < term.arity(); ++k) {
-                    const Index j = free_of_variable_[vars[k]];
+            const Index ne = problem.term(t).num_elements();
+            const Index* vars = variables[t];
+            for (Index e = 0; e < ne; ++e) {
+                for (int k = 0; k < arity[t]; ++k, ++vars) {
+                    const Index j = free_of_variable_[*vars];
                     if (j >= 0) incidences[cursor[j]++] = Incidence{t, e, k};
                 }
             }
@@ -108,7 +111,7 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     tbb::parallel_for(std::size_t(0), incidences.size(), [&](std::size_t p) {
         const Incidence& in = incidences[p];
         gradient_source_[p] = gradient_offset_[in.term] +
-                              std::int64_t(in.element) * problem.term(in.term).arity() + in.local;
+                              std::int64_t(in.element) * arity[in.term] + in.local;
     });
 
     // Quadratic terms: evaluated and projected (unless convex; negative curvature clamped to
@@ -154,9 +157,9 @@ HessianAssembler::HessianAssembler(const Problem& problem)
         c.rows.clear();
         c.rows.push_back(j);  // the diagonal; the candidates below are all i > j
         for (std::int64_t p = incidence_begin[j]; p < incidence_begin[j + 1]; ++p) {
-            const Term& term = problem.term(incidences[p].term);
-            const Index* vars = term.element_variables(incidences[p].element);
-            for (int r = 0; r < term.arity(); ++r) {
+            const Incidence& in = incidences[p];
+            const Index* vars = element_variables(in.term, in.element);
+            for (int r = 0; r < arity[in.term]; ++r) {
                 const Index i = free_of_variable_[vars[r]];
                 if (i > j && c.seen[i] != visit) {
                     c.seen[i] = visit;
@@ -170,12 +173,12 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     auto for_each_contribution = [&](Index j, const ColumnScratch& c, auto&& visit) {
         for (std::int64_t p = incidence_begin[j]; p < incidence_begin[j + 1]; ++p) {
             const Incidence& in = incidences[p];
-            const Term& term = problem.term(in.term);
-            const Index* vars = term.element_variables(in.element);
-            for (int r = 0; r < term.arity(); ++r) {
+            const int N = arity[in.term];
+            const Index* vars = element_variables(in.term, in.element);
+            for (int r = 0; r < N; ++r) {
                 const Index i = free_of_variable_[vars[r]];
                 if (i < j) continue;
-                visit(c.slot[i], in, std::int64_t(in.local) * term.arity() + r);
+                visit(c.slot[i], in, std::int64_t(in.local) * N + r);
             }
         }
     };
@@ -259,7 +262,7 @@ HessianAssembler::HessianAssembler(const Problem& problem)
                 c.quadratic_touched.assign(num_quadratic * length, 0);
                 for_each_contribution(j, c, [&](Index k, const Incidence& in, std::int64_t local) {
                     const int q = quadratic_index[in.term];
-                    const std::int64_t N = problem.term(in.term).arity();
+                    const std::int64_t N = arity[in.term];
                     if (q < 0) {
                         entry_source_[c.cursor[k]++] =
                             hessian_offset_[in.term] + std::int64_t(in.element) * N * N + local;

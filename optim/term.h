@@ -40,7 +40,9 @@ class Term {
     virtual int arity() const = 0;
     virtual Index num_elements() const = 0;
     /// The `arity()` variable indices of element `e`.
-    virtual const Index* element_variables(Index e) const = 0;
+    const Index* element_variables(Index e) const { return all_element_variables() + e * arity(); }
+    /// The variable indices of every element, num_elements() x arity(), element after element.
+    virtual const Index* all_element_variables() const = 0;
     virtual bool is_quadratic() const = 0;
     /// Positive semidefinite Hessian everywhere: never projected (element_energy.h).
     virtual bool is_convex() const = 0;
@@ -86,7 +88,10 @@ class EnergyTerm final : public Term {
 
     int arity() const override { return N; }
     Index num_elements() const override { return static_cast<Index>(elements_.size()); }
-    const Index* element_variables(Index e) const override { return elements_[e].data(); }
+    const Index* all_element_variables() const override {
+        static_assert(sizeof(Element) == N * sizeof(Index), "elements are stored back to back");
+        return elements_.empty() ? nullptr : elements_.front().data();
+    }
     bool is_quadratic() const override { return is_quadratic_energy<E>(); }
     bool is_convex() const override { return is_convex_energy<E>(); }
     bool has_max_step() const override { return HasMaxStep<E>; }
