@@ -110,8 +110,8 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     assign_prefaulted(gradient_source_, incidences.size(), std::int64_t{0});
     tbb::parallel_for(std::size_t(0), incidences.size(), [&](std::size_t p) {
         const Incidence& in = incidences[p];
-        gradient_source_[p] = gradient_offset_[in.term] +
-                              std::int64_t(in.element) * arity[in.term] + in.local;
+        gradient_source_[p] =
+            gradient_offset_[in.term] + std::int64_t(in.element) * arity[in.term] + in.local;
     });
 
     // Quadratic terms: evaluated and projected (unless convex; negative curvature clamped to
