@@ -23,7 +23,8 @@
 //           when the pattern is factored many times (a Newton solve). The supernodal solver then
 //           also permutes the pattern once and factors P A P^T in place with a fixed scatter of
 //           the values, where cholmod_factorize would transpose the matrix twice per call (tlc/
-//           stgc-3d's full solve: 25.3-26.6 -> 22.2-22.9 ms per factorization).
+//           stgc-3d's full solve: 25.3-26.6 -> 22.2-22.9 ms per factorization); the factor of
+//           A's analysis serves P A P^T with its permutation reset, so nothing is analyzed twice.
 //   kAmd    AMD alone: analysis several times faster on large meshes (a 1.45M-unknown LSCM
 //           system: 1.4 s instead of 8.2 s) for somewhat more fill; for a single factorization. If
 //           CHOLMOD fails for a reason other than an
