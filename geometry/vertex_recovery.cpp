@@ -58,7 +58,7 @@ VertexRecovery<D>::VertexRecovery(const SimplicialMesh& mesh, const RestFrames<D
     }
     Eigen::SparseMatrix<double> lower(num_free_, num_free_);
     lower.setFromTriplets(entries.begin(), entries.end());
-    solver_ = std::make_unique<LinearSolver>(LinearSolverType::kCholmodSupernodal);
+    solver_ = std::make_unique<LinearSolver>(LinearSolverType::kAuto);
     solver_->analyze(lower);
     if (solver_->factorize(lower) != FactorizationStatus::kSuccess) {
         throw InvalidArgumentError("vertex recovery: the system could not be factored");

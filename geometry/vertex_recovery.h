@@ -4,8 +4,10 @@
 // with u the rest corners in s_i's frame, over the free vertices; fixed vertices (handles) keep
 // their given positions. Every edge of every simplex contributes, which in 2D is exactly Eq. 6's
 // sum over edges and their two adjacent simplices. The normal equations (a graph Laplacian, the
-// same for every coordinate and for every set of A_i) are factored once with CHOLMOD; each
-// recover() is a right-hand side and triangular solves.
+// same for every coordinate and for every set of A_i) are factored once (LinearSolverType::kAuto:
+// Eigen's LDLT for small meshes, whose solves the supernodal factor's per-supernode BLAS calls
+// made 3x slower, CHOLMOD supernodal for large ones); each recover() is a right-hand side and
+// triangular solves.
 // Each connected component needs at least one fixed vertex; vertices in no simplex keep their
 // given positions.
 
