@@ -9,6 +9,8 @@
 #include <vector>
 
 #include <amd.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "optim/errors.h"
 #include "optim/serial_openmp.h"
@@ -106,7 +108,7 @@ void relax_supernodes(cholmod_common& common) {
     common.nrelax[2] = 128;
 }
 
-/// The matrix P A P^T for a fixed fill-reducing permutation P, assembled by a fixed scatter of A's
+/// The matrix P A P^T for a fixed fill-reducing permutation P, filled by a fixed gather of A's
 /// values, for the supernodal factor of A's analysis turned into that of P A P^T with the natural
 /// ordering (CholmodSupernodal::keep_structure_for_permuted_matrix). Given A's lower triangle and
 /// a permutation, cholmod_factorize transposes the matrix twice at every call (triu(PAP'), then
@@ -115,7 +117,7 @@ void relax_supernodes(cholmod_common& common) {
 /// as it is. The solves permute the right-hand sides and solutions.
 struct PrepermutedMatrix {
     SparseMatrix permuted;    ///< lower triangle of P A P^T
-    std::vector<int> target;  ///< entry k of A -> entry of `permuted` (-1: above the diagonal)
+    std::vector<int> source;  ///< entry p of `permuted` <- entry source[p] of A
     std::vector<int> pivot;   ///< pivot[k] = the row of A that is row k of P A P^T
 
     /// The pattern of P A P^T, with `order` CHOLMOD's permutation (order[k] = k-th pivot).
@@ -149,24 +151,28 @@ struct PrepermutedMatrix {
         }
         permuted.resize(n, n);
         permuted.resizeNonZeros(static_cast<Eigen::Index>(entries.size()));
-        target.assign(lower.nonZeros(), -1);
+        source.resize(entries.size());
         for (int j = 0; j < n; ++j) {
             permuted.outerIndexPtr()[j] = begin[j];
             std::sort(entries.begin() + begin[j], entries.begin() + begin[j + 1]);
             for (int p = begin[j]; p < begin[j + 1]; ++p) {
                 permuted.innerIndexPtr()[p] = entries[p].first;
-                target[entries[p].second] = p;
+                source[p] = entries[p].second;
             }
         }
         permuted.outerIndexPtr()[n] = begin[n];
     }
 
-    void scatter(const SparseMatrix& lower) {
+    /// A gather (sequential writes) on the threads of the caller's arena: on deform/stretch's
+    /// full system (153,741 unknowns) the serial scatter by entry of A took 5.9% of the run.
+    void fill(const SparseMatrix& lower) {
         const double* from = lower.valuePtr();
         double* to = permuted.valuePtr();
-        for (std::size_t k = 0; k < target.size(); ++k) {
-            if (target[k] >= 0) to[target[k]] = from[k];
-        }
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, source.size(), 1 << 14),
+                          [&](const tbb::blocked_range<std::size_t>& range) {
+                              for (std::size_t p = range.begin(); p != range.end(); ++p)
+                                  to[p] = from[source[p]];
+                          });
     }
 
     Eigen::MatrixXd solve(const CholmodSupernodal& solver, const Eigen::MatrixXd& rhs) const {
@@ -313,7 +319,7 @@ FactorizationStatus LinearSolver::factorize(const SparseMatrix& lower) {
     switch (impl_->type) {
         case LinearSolverType::kCholmodSupernodal:
             if (impl_->prepermuted) {
-                impl_->prepermuted->scatter(lower);
+                impl_->prepermuted->fill(lower);
                 return impl_->factorize_cholmod(*impl_->supernodal, impl_->prepermuted->permuted,
                                                 lower);
             }
