@@ -1,7 +1,7 @@
 #include "geometry/subdivision.h"
 
-#include "geometry/io/openmesh_plugin.h"
 #include "geometry/io/plugin_library.h"
+#include "geometry/openmesh_plugin.h"
 
 namespace sa {
 

@@ -1,6 +1,8 @@
 #pragma once
 // Loop subdivision of a triangle mesh through OpenMesh (each level splits every triangle in four
 // and smooths; boundaries are kept as boundaries). Used to build large meshes from small ones.
+// OpenMesh lives in the plugin libsa_openmesh.so, loaded on first use (geometry/openmesh_plugin.h):
+// loop_subdivide throws Error naming the folders tried when it cannot be found.
 
 #include "geometry/simplicial_mesh.h"
 

@@ -1,4 +1,4 @@
-#include "geometry/io/openmesh_plugin.h"
+#include "geometry/openmesh_plugin.h"
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>

@@ -5,7 +5,7 @@
 
 namespace sa::cli {
 
-/// Heap growths mapped populated (runtime_settings.cpp says why), then one OpenBLAS thread, its
+/// Heap growths mapped populated (populated_heap.h), then one OpenBLAS thread, its
 /// idle workers joined, unless OPENBLAS_NUM_THREADS says otherwise (and nothing when the BLAS is
 /// not OpenBLAS). Measured on CHOLMOD supernodal factorizations, OpenBLAS's second thread never
 /// paid on these 2-core machines and its spinning (sched_yield) slowed the small ones, two threads

@@ -1,5 +1,7 @@
 #pragma once
-// PLY and STL triangle meshes, read through OpenMesh (ASCII and binary).
+// PLY and STL triangle meshes, read through OpenMesh (ASCII and binary). OpenMesh lives in the
+// plugin libsa_openmesh.so, loaded on first use (geometry/openmesh_plugin.h): these functions
+// throw Error naming the folders tried when it cannot be found.
 //
 // OpenMesh builds a halfedge mesh: it detaches faces that would make the mesh non-manifold
 // (a "complex edge" or "complex vertex": it re-adds them on copies of their vertices) and drops

@@ -1,4 +1,4 @@
-#include "geometry/io/openmesh_plugin.h"
+#include "geometry/openmesh_plugin.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>

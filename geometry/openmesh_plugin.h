@@ -3,20 +3,17 @@
 // (geometry/io/openmesh_plugin.cpp and geometry/subdivision_plugin.cpp, linked with OpenMesh);
 // geometry/io/openmesh_io.cpp and geometry/subdivision.cpp forward to it, loading the plugin on
 // first use (geometry/io/plugin_library.h). Linked into every program, libOpenMeshCore.so cost
-// each start 2.7 ms (an empty program: 2.4 ms, 5.0 ms with it; perf stat -r 40), a tenth of a
-// small mapping problem's whole run.
+// each start 2.6 ms (an empty program: 2.4 ms, 5.0 ms with it; perf stat -r 40).
 
-#include <string>
-
-#include "geometry/io/mesh_file.h"
-#include "geometry/simplicial_mesh.h"
+#include "geometry/io/openmesh_io.h"
+#include "geometry/subdivision.h"
 
 namespace sa {
 
 struct OpenMeshFunctions {
-    MeshFile (*read_ply)(const std::string& path);
-    MeshFile (*read_stl)(const std::string& path);
-    SimplicialMesh (*loop_subdivide)(const SimplicialMesh& mesh, int levels);
+    decltype(&sa::read_ply) read_ply;
+    decltype(&sa::read_stl) read_stl;
+    decltype(&sa::loop_subdivide) loop_subdivide;
 };
 
 /// loop_subdivide() of geometry/subdivision.h, in the plugin.
