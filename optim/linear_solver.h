@@ -21,7 +21,7 @@
 // factorize() until analyze() is called again. CHOLMOD's ordering is chosen by FillOrdering:
 //   kBest   CHOLMOD's default: AMD, then METIS when AMD's fill is large, the better kept. Pays off
 //           when the pattern is factored many times (a Newton solve). The supernodal solver then
-//           also permutes the pattern once and factors P A P^T in place with a fixed scatter of
+//           also permutes the pattern once and factors P A P^T in place with a fixed gather of
 //           the values, where cholmod_factorize would transpose the matrix twice per call (tlc/
 //           stgc-3d's full solve: 25.3-26.6 -> 22.2-22.9 ms per factorization); the factor of
 //           A's analysis serves P A P^T with its permutation reset, so nothing is analyzed twice.

@@ -7,7 +7,8 @@
 // one is a page fault: about 11 us on the virtual machines this project is measured on, where
 // tlc/param2d took 1,130 of them. Each growth of arena 0 is instead mapped in one
 // madvise(MADV_POPULATE_WRITE) call when jemalloc maps it (optim/prefault.h): param2d
-// --until-valid 500 page faults, 0.111 -> 0.104 s (BENCHMARKS.md).
+// --until-valid 500 page faults, 0.111 -> 0.104 s; 462 once large allocations went through
+// arena 0 as well (BENCHMARKS.md).
 //
 // Costs: the unused tail of the last growth is resident too (at most kLargestPopulatedGrowth;
 // jemalloc keeps it retained, and decay never returns it); jemalloc zeroes recycled memory by
