@@ -187,7 +187,8 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
                 tau = std::min(tau * opt.regularization.factor, opt.regularization.max);
             }
         }
-        times.factorize += factor_watch.seconds();
+        const double factorization_time = factor_watch.seconds();
+        times.factorize += factorization_time;
         if (status != FactorizationStatus::kSuccess) {
             return finish(TerminationType::kFactorizationFailed,
                           status == FactorizationStatus::kFailed
@@ -253,6 +254,7 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
         record.line_search_trials = trials;
         record.regularization = tau;
         record.factorizations = factorizations;
+        record.factorization_time = factorization_time;
         record.projected_blocks = eval.projected_blocks;
 
         const double previous_energy = energy;

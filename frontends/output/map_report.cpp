@@ -129,6 +129,8 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
             row["gradient_norm"] = n.gradient_norm;
             row["decrement"] = n.decrement;
             row["regularization"] = n.regularization;
+            row["iteration_time"] = n.iteration_time;
+            row["factorization_time"] = n.factorization_time;
         }
         iterations.push_back(row);
     }

@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <tbb/task_arena.h>
+
+#include <cstring>
 #include <random>
 
 #include "optim/linear_solver.h"
@@ -78,6 +81,38 @@ TEST_P(LinearSolverTest, IgnoresTheUpperTriangle) {
     const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(200, -1.0, 3.0);
     const Eigen::VectorXd x = solver.solve(b);
     EXPECT_LT((full * x - b).norm() / b.norm(), 1e-10);
+}
+
+// A system large enough for the supernodal solver to split its substitutions over two threads
+// (optim/supernodal_solve.h): the same solution as CHOLMOD's own substitutions (solve_columns),
+// and the same bits on one thread as on two.
+TEST(LinearSolver, SplitSubstitutionsMatchCholmodsOnAnyThreadCount) {
+    const int nx = 120, ny = 90, n = nx * ny;
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int j = 0; j < ny; ++j) {
+        for (int i = 0; i < nx; ++i) {
+            const int v = j * nx + i;
+            entries.emplace_back(v, v, 4.5);
+            if (i + 1 < nx) entries.emplace_back(v + 1, v, -1.0);
+            if (j + 1 < ny) entries.emplace_back(v + nx, v, -1.0);
+        }
+    }
+    Eigen::SparseMatrix<double> lower(n, n);
+    lower.setFromTriplets(entries.begin(), entries.end());
+    const Eigen::SparseMatrix<double> full = lower.selfadjointView<Eigen::Lower>();
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -3.0, 2.0).array().sin();
+    Eigen::VectorXd x[2];
+    for (int threads : {1, 2}) {
+        tbb::task_arena(threads).execute([&] {
+            LinearSolver solver(LinearSolverType::kCholmodSupernodal);
+            solver.analyze(lower);
+            ASSERT_EQ(solver.factorize(lower), FactorizationStatus::kSuccess);
+            x[threads - 1] = solver.solve(b);
+            EXPECT_LT((x[threads - 1] - solver.solve_columns(b)).norm(), 1e-12 * x[0].norm());
+        });
+    }
+    EXPECT_LT((full * x[0] - b).norm() / b.norm(), 1e-12);
+    EXPECT_EQ(std::memcmp(x[0].data(), x[1].data(), sizeof(double) * n), 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(AllSolvers, LinearSolverTest,
