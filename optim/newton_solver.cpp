@@ -1,5 +1,7 @@
 #include "optim/newton_solver.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -17,6 +19,18 @@ std::string format(const char* what, double value) {
     std::ostringstream out;
     out << what << value;
     return out.str();
+}
+
+/// Whether the n values are all finite, on the arena's threads (a serial pass over tlc/stgc-3d's
+/// 386,211 Hessian entries was part of the 0.3 ms per iteration outside the timed phases).
+bool all_finite(const double* values, Index n) {
+    return tbb::parallel_reduce(
+        tbb::blocked_range<Index>(0, n, 1 << 15), true,
+        [&](const tbb::blocked_range<Index>& range, bool finite) {
+            return finite && Eigen::Map<const Eigen::VectorXd>(values + range.begin(), range.size())
+                                 .allFinite();
+        },
+        [](bool a, bool b) { return a && b; });
 }
 
 }  // namespace
@@ -138,8 +152,7 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
         Eigen::SparseMatrix<double>& H = assembler.hessian();
         const double gradient_norm = g.size() ? g.lpNorm<Eigen::Infinity>() : 0.0;
         summary.final_gradient_norm = gradient_norm;
-        if (!std::isfinite(gradient_norm) ||
-            !Eigen::Map<const Eigen::VectorXd>(H.valuePtr(), H.nonZeros()).allFinite()) {
+        if (!std::isfinite(gradient_norm) || !all_finite(H.valuePtr(), H.nonZeros())) {
             return finish(TerminationType::kNonFinite, "the gradient or Hessian is not finite");
         }
         if (opt.gradient_tolerance > 0.0 && gradient_norm <= opt.gradient_tolerance) {
