@@ -5,9 +5,14 @@
 // Why: one triangular solve per Newton iteration reads the whole factor twice (L, then L^T), one
 // dense supernode after another. CHOLMOD does it on one thread (dtrsv and dgemv per supernode);
 // on tlc/stgc-3d's full system (3.16 million factor values) that was 5-6 ms per iteration against
-// a 25-30 ms factorization, the largest cost of an iteration after it. One core streams the
-// factor at about half the rate two cores do (measured here: 53 against 106 GB/s from a 20 MB
-// array that stays in the L3 cache), so the second core, idle during the solve, can halve it.
+// a 25-30 ms factorization, the largest cost of an iteration after it, and the second core was
+// idle during it. Split here: 2.0-2.9 ms (bench/iteration_cost.py). The split is limited by the
+// top, which on a mesh's tree is mostly a chain of large separator supernodes (stgc-3d: 28% of
+// the factor in 20 supernodes, serial).
+//
+// The result also does not depend on where the factor lies in memory: the dot products sum in
+// fixed lanes (Eigen's start at the first aligned entry), so runs that allocate differently give
+// the same bits.
 //
 // How: the subtrees of the supernodal elimination tree are independent in both substitutions
 // except through their common ancestors. The tree is cut once, from the structure alone, into
