@@ -147,7 +147,7 @@ SupernodalSolve::SupernodalSolve(const SupernodalStructure& structure)
         };
         std::vector<int> candidates = roots, best_candidates;
         std::vector<int> best_group;
-        double top_work = 0.0, best_cost = total;
+        double kept = 0.0, best_cost = total;
         for (int split = 0; split <= kMaxSplits && !candidates.empty(); ++split) {
             std::sort(candidates.begin(), candidates.end(), heavier);
             double load[2] = {0.0, 0.0};
@@ -156,7 +156,7 @@ SupernodalSolve::SupernodalSolve(const SupernodalStructure& structure)
                 group[i] = load[1] < load[0] ? 1 : 0;
                 load[group[i]] += subtree_work[candidates[i]];
             }
-            const double cost = top_work + std::max(load[0], load[1]);
+            const double cost = kept + std::max(load[0], load[1]);
             if (cost < best_cost) {
                 best_cost = cost;
                 best_candidates = candidates;
@@ -164,8 +164,8 @@ SupernodalSolve::SupernodalSolve(const SupernodalStructure& structure)
             }
             const int heaviest = candidates.front();
             if (children[heaviest].empty()) break;
-            top_work += work[heaviest];
-            if (top_work >= best_cost) break;
+            kept += work[heaviest];
+            if (kept >= best_cost) break;
             candidates.erase(candidates.begin());
             candidates.insert(candidates.end(), children[heaviest].begin(),
                               children[heaviest].end());
@@ -184,7 +184,6 @@ SupernodalSolve::SupernodalSolve(const SupernodalStructure& structure)
                     rows_.data() + row_start_[s] + (first_column_[s + 1] - first_column_[s]);
                 const int* end = rows_.data() + row_start_[s + 1];
                 g.own_rows.push_back(int(std::lower_bound(below, end, end_column) - below));
-                g.work += work[s];
             }
         }
         for (Group& g : groups_) {

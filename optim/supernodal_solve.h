@@ -71,7 +71,6 @@ class SupernodalSolve {
                                       ///< its columns belong to its subtree (the rest are top's)
         mutable std::vector<double> top_updates;  ///< size num_columns; only top rows used
         mutable Eigen::VectorXd scratch;          ///< the tallest supernode's height
-        double work = 0.0;
     };
 
     void forward(int s, int own_rows, const double* values, double* b, double* outside,
