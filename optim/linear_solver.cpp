@@ -120,11 +120,11 @@ struct PrepermutedMatrix {
     SparseMatrix permuted;    ///< lower triangle of P A P^T
     std::vector<int> source;  ///< entry p of `permuted` <- entry source[p] of A
     std::vector<int> pivot;   ///< pivot[k] = the row of A that is row k of P A P^T
-    /// For one right-hand side, when it splits the tree (CHOLMOD's single-thread substitutions
-    /// are otherwise as fast or faster: on deform/stretch's factor, 4,222 small supernodes, 8 ms
-    /// against 10-12 ms for SupernodalSolve on one thread). Per Newton iteration of `sa map
-    /// --mode full`, CHOLMOD's against the split: tlc/param2d (0.82 million factor values)
-    /// 1.0-1.7 against 0.45-0.56 ms, tlc/stgc-3d (3.16 million) 5-6 against 2.0-2.9 ms.
+    /// For one right-hand side; kept only when it splits the tree (CHOLMOD's single-thread
+    /// substitutions are otherwise as fast or faster: on deform/stretch's factor, 4,222 small
+    /// supernodes, 8 ms against 10-12 ms for SupernodalSolve on one thread). Per Newton iteration
+    /// of `sa map --mode full`, CHOLMOD's against the split: tlc/param2d (0.82 million factor
+    /// values) 1.0-1.7 against 0.33-0.56 ms, tlc/stgc-3d (3.16 million) 5-6 against 2.0-2.9 ms.
     std::optional<SupernodalSolve> substitution;
 
     /// The pattern of P A P^T, from A's analyzed supernodal factor (its permutation, and its
@@ -175,6 +175,7 @@ struct PrepermutedMatrix {
                 n, static_cast<int>(factor.nsuper), static_cast<const int*>(factor.super),
                 static_cast<const int*>(factor.pi), static_cast<const int*>(factor.px),
                 static_cast<const int*>(factor.s)});
+            if (substitution->serial_share() >= 1.0) substitution.reset();
         }
     }
 
@@ -361,8 +362,7 @@ FactorizationStatus LinearSolver::factorize(const SparseMatrix& lower) {
 
 Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& rhs) const {
     if (impl_->type == LinearSolverType::kCholmodSupernodal && impl_->prepermuted &&
-        impl_->prepermuted->substitution &&
-        impl_->prepermuted->substitution->serial_share() < 1.0) {
+        impl_->prepermuted->substitution) {
         return impl_->prepermuted->solve(*impl_->supernodal, rhs);
     }
     return solve_columns(rhs);

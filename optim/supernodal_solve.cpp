@@ -254,7 +254,6 @@ void SupernodalSolve::backward(int s, const double* values, double* b,
 void SupernodalSolve::run_group(const Group& group, const double* values, double* b,
                                 bool forward_pass) const {
     const std::size_t count = group.supernodes.size();
-    if (count == 0) return;
     if (forward_pass) {
         double* outside = group.top_updates.data();
         for (int r : top_rows_) outside[r] = 0.0;
@@ -267,27 +266,24 @@ void SupernodalSolve::run_group(const Group& group, const double* values, double
 }
 
 void SupernodalSolve::solve_in_place(const double* values, double* b) const {
-    const bool split = !groups_[0].supernodes.empty() && !groups_[1].supernodes.empty();
+    // A split fills both groups (its cost is below the serial one only with two subtrees or
+    // more, and the second goes to the empty group), or none.
+    const bool split = !groups_[0].supernodes.empty();
     auto both_groups = [&](bool forward_pass) {
-        if (split) {
-            tbb::parallel_invoke([&] { run_group(groups_[0], values, b, forward_pass); },
-                                 [&] { run_group(groups_[1], values, b, forward_pass); });
-        } else {
-            for (const Group& g : groups_) run_group(g, values, b, forward_pass);
-        }
+        tbb::parallel_invoke([&] { run_group(groups_[0], values, b, forward_pass); },
+                             [&] { run_group(groups_[1], values, b, forward_pass); });
     };
-    both_groups(true);
-    for (const Group& g : groups_) {
-        if (g.supernodes.empty()) continue;
-        const double* updates = g.top_updates.data();
-        for (int r : top_rows_) b[r] -= updates[r];
+    if (split) {
+        both_groups(true);
+        for (const Group& g : groups_)
+            for (int r : top_rows_) b[r] -= g.top_updates[r];
     }
     for (int s : top_) {
         const int k = first_column_[s + 1] - first_column_[s];
         forward(s, row_start_[s + 1] - row_start_[s] - k, values, b, nullptr, top_scratch_);
     }
     for (auto s = top_.rbegin(); s != top_.rend(); ++s) backward(*s, values, b, top_scratch_);
-    both_groups(false);
+    if (split) both_groups(false);
 }
 
 }  // namespace sa
