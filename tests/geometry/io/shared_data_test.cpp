@@ -162,6 +162,7 @@ TEST_F(SharedData, SurfaceMeshes) {
         {"param/camel_b.obj", {2032, 3576}},
         {"param/circle.obj", {5201, 10240}},
         {"param/face.obj", {25905, 51712}},
+        {"param/golf.obj", {262, 515}},
         {"param/hand-uv.obj", {5011, 9960}},
         {"param/hemisphere.obj", {145, 256}},
         {"param/snail.obj", {871, 1653}},
@@ -179,6 +180,7 @@ TEST_F(SharedData, SurfaceMeshes) {
         {"frame-fields/lilium.obj", {3389, 6590}},
         {"frame-fields/snail.obj", {871, 1653}},
         {"frame-fields/bumpy-cube.obj", {19970, 39936}},
+        {"frame-fields/torus.obj", {576, 1152}},
         {"polycube/fastbndpolycube/boundary.obj", {10456, 20920}},
         {"polycube/validity-first-labeling/surface.obj", {9984, 19964}},
     };
@@ -186,7 +188,7 @@ TEST_F(SharedData, SurfaceMeshes) {
     std::size_t listed = 0;
     for (const char* folder : {"param", "surfaces"})
         for (const char* suffix : {".obj", ".off"}) listed += files(folder, suffix).size();
-    EXPECT_EQ(listed, 17u);
+    EXPECT_EQ(listed, 18u);
 
     for (const auto& [name, counts] : expected) {
         SCOPED_TRACE(name);
