@@ -46,8 +46,10 @@ class SaCommand : public ::testing::Test {
     }
     std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
-    // A plain-text problem: a grid with its boundary fixed and the interior scrambled.
-    std::string folded_problem(const std::string& name) {
+    // A plain-text problem: a grid with its boundary fixed and the interior scrambled; with
+    // `mirror`, the boundary is mirrored as well, which inverts the triangles at the corners (all
+    // three of their vertices are handles).
+    std::string folded_problem(const std::string& name, bool mirror = false) {
         const SimplicialMesh mesh = grid_triangles(8, 8);
         const MeshTopology t = mesh_topology(mesh, "grid");
         std::mt19937 rng(3);
@@ -62,6 +64,7 @@ class SaCommand : public ::testing::Test {
             Eigen::RowVector2d p = mesh.vertices.row(v);
             if (t.boundary_vertex[v]) {
                 handles.push_back(v);
+                if (mirror) p.x() = 1.0 - p.x();
             } else {
                 p += Eigen::RowVector2d(u(rng), u(rng));
             }
@@ -123,6 +126,23 @@ TEST_F(SaCommand, BadInputGetsOneLineExitTwoAndNoOutput) {
     EXPECT_EQ(sa("map --rest " + problem).status, 2);                                 // no --out
     EXPECT_FALSE(fs::exists(path("out.vtu")));
     EXPECT_FALSE(fs::exists(path("out.node")));
+}
+
+TEST_F(SaCommand, MapDiagnosesHandlesThatRuleOutASolution) {
+    const std::string problem = folded_problem("mirrored.txt", true);
+    const Outcome r = sa("map --rest " + problem + " --out " + path("out.vtu") + " --report " +
+                         path("report.json"));
+    EXPECT_EQ(r.status, 1) << r.out << r.err;
+    EXPECT_NE(r.out.find("infeasible"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("are inverted"), std::string::npos) << r.out;
+    EXPECT_EQ(r.err, "") << "no progress row: nothing was optimized";
+    EXPECT_FALSE(fs::exists(path("out.vtu")));
+    const nlohmann::json report = nlohmann::json::parse(read(path("report.json")));
+    EXPECT_FALSE(report["success"].get<bool>());
+    // The two corner cells whose three vertices are boundary handles.
+    EXPECT_EQ(report["infeasible"]["inverted"].get<int>(), 2) << report.dump();
+    EXPECT_EQ(report["infeasible"]["inverted_simplices"].size(), 2u);
+    EXPECT_FALSE(report.contains("iterations"));
 }
 
 TEST_F(SaCommand, ExistingOutputsAreKeptWithoutForce) {
