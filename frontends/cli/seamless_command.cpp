@@ -79,7 +79,8 @@ CLI::App* add_seamless_command(CLI::App& app, SeamlessArguments& a) {
         ->required();
     cmd->add_option("--field", a.field,
                     "per-face frame or cross field: libigl .dmat (ASCII or binary) or "
-                    ".crossfield; faces it leaves free are filled by the smoothest cross field. "
+                    ".crossfield, or Directional .rawfield (N = 4); faces it leaves free are "
+                    "filled by the smoothest cross field. "
                     "Without it (and without --constraints), the smoothest cross field");
     cmd->add_option("--constraints", a.constraints,
                     "libigl's pair B.dmat BC.dmat: constrained faces and their vectors; the "
