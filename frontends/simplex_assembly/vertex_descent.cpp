@@ -127,8 +127,10 @@ VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOp
     }
     if (!out.start_valid) result.success = false;
     std::ostringstream message;
-    message << (result.success ? "success: " : "FAILED: ") << result.verification.describe()
-            << ". ";
+    message << (!result.success                      ? "FAILED: "
+                : result.verification.within_bound() ? "success: "
+                                                     : "no foldovers, over the bound: ")
+            << result.verification.describe() << ". ";
     if (!out.start_valid) {
         message << "The start is not valid (" << prepared.initial_quality.inverted << " inverted, "
                 << prepared.initial_quality.degenerate << " degenerate): no descent ran";

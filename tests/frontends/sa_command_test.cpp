@@ -49,7 +49,9 @@ class SaCommand : public ::testing::Test {
     // A plain-text problem: a grid with its boundary fixed and the interior scrambled; with
     // `mirror`, the boundary is mirrored as well, which inverts the triangles at the corners (all
     // three of their vertices are handles).
-    std::string folded_problem(const std::string& name, bool mirror = false) {
+    // With `collapse`, handle 1 sits where handle 0 does: the rest edge 0-1 has zero length.
+    std::string folded_problem(const std::string& name, bool mirror = false,
+                               bool collapse = false) {
         const SimplicialMesh mesh = grid_triangles(8, 8);
         const MeshTopology t = mesh_topology(mesh, "grid");
         std::mt19937 rng(3);
@@ -65,6 +67,7 @@ class SaCommand : public ::testing::Test {
             if (t.boundary_vertex[v]) {
                 handles.push_back(v);
                 if (mirror) p.x() = 1.0 - p.x();
+                if (collapse && v == 1) p = mesh.vertices.row(0);
             } else {
                 p += Eigen::RowVector2d(u(rng), u(rng));
             }
@@ -143,6 +146,15 @@ TEST_F(SaCommand, MapDiagnosesHandlesThatRuleOutASolution) {
     EXPECT_EQ(report["infeasible"]["inverted"].get<int>(), 2) << report.dump();
     EXPECT_EQ(report["infeasible"]["inverted_simplices"].size(), 2u);
     EXPECT_FALSE(report.contains("iterations"));
+
+    const Outcome collapsed = sa("map --rest " + folded_problem("collapsed.txt", false, true) +
+                                 " --out " + path("out.vtu"));
+    EXPECT_EQ(collapsed.status, 1) << collapsed.out << collapsed.err;
+    EXPECT_NE(collapsed.out.find("1 rest edges have both ends at one target (edges 0-1)"),
+              std::string::npos)
+        << collapsed.out;
+    EXPECT_EQ(collapsed.err, "");
+    EXPECT_FALSE(fs::exists(path("out.vtu")));
 }
 
 TEST_F(SaCommand, ExistingOutputsAreKeptWithoutForce) {
