@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <unordered_map>
 
 namespace sa {
 
@@ -84,16 +83,17 @@ HandleFeasibility check_handle_feasibility(const SimplicialMesh& mesh,
     HandleFeasibility result;
     const int d = mesh.simplex_dimension();
     if (handles.empty()) return result;
-    // The first target of every handle vertex; repeated entries are compared with it.
-    std::unordered_map<Index, Index> row_of;
-    row_of.reserve(handles.size());
+    // The first target of every handle vertex (its row, -1 for other vertices); repeated entries
+    // are compared with it. An array, not a map: every simplex looks its vertices up.
+    std::vector<Index> row_of(mesh.num_vertices(), -1);
     for (std::size_t k = 0; k < handles.size(); ++k) {
-        auto [it, inserted] = row_of.emplace(handles[k], Index(k));
-        if (inserted) continue;
-        const Eigen::RowVectorXd first = targets.row(it->second).head(d);
-        const Eigen::RowVectorXd second = targets.row(k).head(d);
-        if ((first - second).norm() > tolerance)
-            result.conflicts.push_back({handles[k], first, second});
+        Index& first = row_of[handles[k]];
+        if (first < 0) {
+            first = Index(k);
+            continue;
+        }
+        const Eigen::RowVectorXd a = targets.row(first).head(d), b = targets.row(k).head(d);
+        if ((a - b).norm() > tolerance) result.conflicts.push_back({handles[k], a, b});
     }
 
     // Fixed simplices: signed volumes of their images against the rest orientation.
@@ -102,7 +102,7 @@ HandleFeasibility check_handle_feasibility(const SimplicialMesh& mesh,
     Eigen::MatrixXd corners(d, d + 1);
     for (Index s = 0; s < mesh.num_simplices(); ++s) {
         bool all = true;
-        for (int k = 0; k <= d && all; ++k) all = row_of.count(mesh.simplices(s, k)) > 0;
+        for (int k = 0; k <= d && all; ++k) all = row_of[mesh.simplices(s, k)] >= 0;
         if (!all) continue;
         for (int k = 0; k <= d; ++k)
             corners.col(k) = targets.row(row_of[mesh.simplices(s, k)]).head(d).transpose();
@@ -129,9 +129,8 @@ HandleFeasibility check_handle_feasibility(const SimplicialMesh& mesh,
             for (int b = a + 1; b <= d; ++b) {
                 Index u = mesh.simplices(s, a), v = mesh.simplices(s, b);
                 if (u > v) std::swap(u, v);
-                const auto iu = row_of.find(u), iv = row_of.find(v);
-                if (iu == row_of.end() || iv == row_of.end()) continue;
-                if ((targets.row(iu->second).head(d) - targets.row(iv->second).head(d)).norm() <=
+                if (row_of[u] < 0 || row_of[v] < 0) continue;
+                if ((targets.row(row_of[u]).head(d) - targets.row(row_of[v]).head(d)).norm() <=
                     zero)
                     result.collapsed_edges.push_back({u, v});
             }

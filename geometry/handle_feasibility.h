@@ -46,7 +46,7 @@ struct HandleFeasibility {
 };
 
 /// `mesh` is the rest shape (#V x 2 or #V x 3; triangles or tetrahedra), `handles` the handle
-/// vertices (indices in range, possibly repeated), `targets` their positions (#handles x d, d the
+/// vertices (indices in [0, #V), possibly repeated), `targets` their positions (#handles x d, d the
 /// simplex dimension, one row per entry of `handles`), `tolerance` the distance within which two
 /// targets of one vertex agree (in the targets' units).
 HandleFeasibility check_handle_feasibility(const SimplicialMesh& mesh,
