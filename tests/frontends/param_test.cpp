@@ -185,6 +185,16 @@ TEST(Parameterization, FallsBackToTutteWhenTheLscmStartFoldsBeyondRepair) {
     EXPECT_EQ(r.solve.verification.inverted, 0);
     EXPECT_EQ(r.solve.verification.degenerate, 0);
     expect_valid_layout(mesh, r.uv);
+
+    // The optimal bound goes on from the fallback's map.
+    ParameterizationOptions optimal = conformal_options();
+    optimal.optimal_bound_rounds = 10;
+    const ParameterizationResult o =
+        parameterize(mesh, "flat ball", nullptr, InitialMap::kLscm, optimal);
+    EXPECT_TRUE(o.success) << o.message;
+    EXPECT_TRUE(o.fallback.used);
+    EXPECT_LT(o.reached_bound, r.reached_bound);
+    expect_valid_layout(mesh, o.uv);
 }
 
 TEST(Parameterization, AnUnreachableBoundIsReportedWithAMapWithoutFoldovers) {
