@@ -10,6 +10,7 @@ set(SA_GEOMETRY_IO_SOURCES
     io/openmesh_io.cpp
     io/plugin_library.cpp
     io/problem_io.cpp
+    io/rawfield_io.cpp
     io/tetgen_io.cpp
     io/vtk_io.cpp
 )
