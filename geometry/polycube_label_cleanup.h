@@ -19,7 +19,9 @@
 namespace sa {
 
 struct LabelCleanupOptions {
-    int min_triangles = 3;            ///< a chart with fewer triangles is too small
+    /// A chart with fewer triangles is too small: one triangle cannot be a PolyCube face (a
+    /// rectilinear polygon has at least four corners).
+    int min_triangles = 2;
     double min_area_fraction = 1e-3;  ///< ... or with less of the total boundary area
     int min_neighbours = 4;
     int max_rounds = 10000;
