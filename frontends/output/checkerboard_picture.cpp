@@ -240,13 +240,7 @@ void write_checkerboard_png_impl(const std::string& path, const Eigen::MatrixXd&
     points.leftCols(positions.cols()) = positions;
     const vtkSmartPointer<vtkPolyData> surface = make_surface(points, faces, uv);
     const vtkSmartPointer<vtkRenderer> renderer = scene(surface, picture);
-    SceneView view;
-    view.title = picture.title;
-    view.width = picture.width;
-    view.height = picture.height;
-    view.azimuth = picture.azimuth;
-    view.elevation = picture.elevation;
-    render_scene_png(path, renderer, points, view, "write_checkerboard_png");
+    render_scene_png(path, renderer, points, scene_view(picture), "write_checkerboard_png");
 }
 
 }  // namespace sa

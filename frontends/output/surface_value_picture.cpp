@@ -36,7 +36,8 @@ void check_input(const Eigen::MatrixXd& positions, const Eigen::MatrixXi& faces,
     if (faces.cols() != 3 || faces.rows() == 0) {
         throw InvalidArgumentError(where + "faces must be #F x 3 with #F > 0");
     }
-    if (values.size() != faces.rows() || (!flagged.empty() && flagged.size() != values.size())) {
+    if (values.size() != faces.rows() ||
+        (!flagged.empty() && Eigen::Index(flagged.size()) != values.size())) {
         throw InvalidArgumentError(where + "one value (and flag) per face expected, got " +
                                    std::to_string(values.size()) + " values for " +
                                    std::to_string(faces.rows()) + " faces");
@@ -141,12 +142,7 @@ void write_surface_value_png_impl(const std::string& path, const Eigen::MatrixXd
     renderer->SetBackground(1.0, 1.0, 1.0);
     renderer->AddActor(actor);
     renderer->AddActor2D(bar);
-    SceneView view;
-    view.title = picture.title;
-    view.width = picture.width;
-    view.height = picture.height;
-    view.azimuth = picture.azimuth;
-    view.elevation = picture.elevation;
+    SceneView view = scene_view(picture);
     view.right = 0.62;  // the colour bar on the right
     render_scene_png(path, renderer, positions, view, "write_surface_value_png");
 }

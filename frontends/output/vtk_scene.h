@@ -29,6 +29,18 @@ struct SceneView {
     double right = 1.0;
 };
 
+/// The view of a picture's settings (any struct with these fields).
+template <class Picture>
+SceneView scene_view(const Picture& picture) {
+    SceneView view;
+    view.title = picture.title;
+    view.width = picture.width;
+    view.height = picture.height;
+    view.azimuth = picture.azimuth;
+    view.elevation = picture.elevation;
+    return view;
+}
+
 /// `points` #V x 3: what the camera must show. Throws InputError (messages start with `who`)
 /// when there is no display or the picture cannot be rendered or written.
 void render_scene_png(const std::string& path, vtkRenderer* renderer, const Eigen::MatrixXd& points,

@@ -12,25 +12,12 @@
 #include "frontends/output/colour_map.h"
 #include "geometry/mesh_generators.h"
 #include "optim/errors.h"
+#include "render_test_util.h"
 
 namespace sa {
 namespace {
 
 namespace fs = std::filesystem;
-
-bool can_render() {
-    const char* display = std::getenv("DISPLAY");
-    if (display != nullptr && *display != '\0') return true;
-    const char* path = std::getenv("PATH");
-    const std::string dirs = path ? path : "";
-    for (std::size_t start = 0; start <= dirs.size();) {
-        std::size_t end = dirs.find(':', start);
-        if (end == std::string::npos) end = dirs.size();
-        if (access((dirs.substr(start, end - start) + "/Xvfb").c_str(), X_OK) == 0) return true;
-        start = end + 1;
-    }
-    return false;
-}
 
 /// Pixels within `tolerance` (0..1 per channel, up to the lighting's brightness) of `c`.
 int count_colour(vtkImageData* image, const std::array<double, 3>& c) {
@@ -52,7 +39,7 @@ int count_colour(vtkImageData* image, const std::array<double, 3>& c) {
 // A sphere whose upper half has value 1 (the first colour), lower half 3 (the last), and a band
 // of flagged faces (red).
 TEST(SurfaceValuePicture, ColoursFacesByValueAndFlagsInRed) {
-    if (!can_render()) GTEST_SKIP() << "no DISPLAY and no Xvfb";
+    SKIP_WITHOUT_X();
     const SimplicialMesh sphere = sphere_triangles(8);
     Eigen::VectorXd values(sphere.num_simplices());
     std::vector<unsigned char> flagged(sphere.num_simplices(), 0);
