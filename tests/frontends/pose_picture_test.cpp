@@ -11,6 +11,7 @@
 #include "geometry/mesh_generators.h"
 #include "optim/errors.h"
 #include "render_test_util.h"
+#include "tests/geometry/io/io_test_util.h"
 
 namespace sa {
 namespace {
@@ -19,15 +20,7 @@ namespace fs = std::filesystem;
 
 class PosePictureTest : public ::testing::Test {
   protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("sa_pose_picture_" + std::to_string(getpid()) + "_" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    std::string path(const std::string& name) const { return folder_.path(name); }
 
     // Pixels whose colour is red-dominated (the inverted colour, 0.9 0.1 0.1, alone or seen
     // through the translucent surface), and the picture's size.
@@ -51,7 +44,7 @@ class PosePictureTest : public ::testing::Test {
         return count;
     }
 
-    fs::path dir_;
+    test::TempFolder folder_;
 };
 
 PosePicture small_picture() {
