@@ -62,8 +62,9 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
         ->capture_default_str();
     map->add_option(
         "--initialization", a.initialization,
-        "initial linear parts: similarity, rotation, identity or random (default: similarity "
-        "for conformal, rotation otherwise)");
+        "initial linear parts: similarity, rotation, identity, random or bounded:K (the "
+        "closest with sigma_max/sigma_min <= K; default: similarity for conformal, rotation "
+        "otherwise)");
     map->add_option("--seed", a.seed, "seed of --initialization random")->capture_default_str();
     map->add_option("--max-iterations", a.max_iterations, "Newton iterations at most")
         ->capture_default_str();

@@ -57,6 +57,10 @@ void check_input(const Eigen::MatrixXd& positions, const Eigen::MatrixXi& faces,
         !std::isfinite(picture.high)) {
         throw InvalidArgumentError(where + "the colour range needs finite low < high");
     }
+    if (!(picture.opacity > 0.0 && picture.opacity <= 1.0)) {
+        throw InvalidArgumentError(where + "picture.opacity = " + std::to_string(picture.opacity) +
+                                   ", outside (0, 1]");
+    }
     if (!std::isfinite(picture.azimuth) || !std::isfinite(picture.elevation)) {
         throw InvalidArgumentError(where + "picture.azimuth and picture.elevation must be finite");
     }
@@ -78,7 +82,7 @@ void write_surface_value_png_impl(const std::string& path, const Eigen::MatrixXd
     vtkNew<vtkCellArray> triangles;
     triangles->AllocateExact(faces.rows(), 3 * faces.rows());
     vtkNew<vtkUnsignedCharArray> colours;
-    colours->SetNumberOfComponents(3);
+    colours->SetNumberOfComponents(4);  // RGBA: unflagged faces get picture.opacity
     colours->SetNumberOfTuples(faces.rows());
     for (Eigen::Index f = 0; f < faces.rows(); ++f) {
         const vtkIdType ids[3] = {faces(f, 0), faces(f, 1), faces(f, 2)};
@@ -93,6 +97,9 @@ void write_surface_value_png_impl(const std::string& path, const Eigen::MatrixXd
         for (int k = 0; k < 3; ++k) {
             colours->SetTypedComponent(f, k, static_cast<unsigned char>(std::lround(255 * c[k])));
         }
+        const bool opaque = !flagged.empty() && flagged[f];
+        colours->SetTypedComponent(
+            f, 3, static_cast<unsigned char>(std::lround(255 * (opaque ? 1.0 : picture.opacity))));
     }
     vtkNew<vtkPolyData> surface;
     surface->SetPoints(points);

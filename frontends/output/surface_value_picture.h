@@ -22,6 +22,9 @@ struct SurfaceValuePicture {
     int height = 1200;
     double azimuth = 30.0;  ///< degrees (vtk_scene.h)
     double elevation = 25.0;
+    /// Opacity of the faces not flagged, in (0, 1]: below 1, flagged faces behind them show
+    /// through (the faces of inverted tetrahedra inside a volume).
+    double opacity = 1.0;
 };
 
 /// Writes `path` (PNG). `positions` #V x 3, `faces` #F x 3 (0-based, counter-clockwise seen from

@@ -3,6 +3,7 @@ set(SA_GEOMETRY_IO_SOURCES
     io/dmat_io.cpp
     io/frame_field_io.cpp
     io/index_list_io.cpp
+    io/indexed_positions_io.cpp
     io/medit_io.cpp
     io/mesh_file.cpp
     io/obj_io.cpp
