@@ -142,20 +142,18 @@ struct AssemblyRun {
 };
 
 /// A linear constraint over N named variables: coefficients * x[variables] = rhs (R rows).
-template <int R, int N>
+template <int N, int R>
 struct LinearConstraint {
     std::array<Index, N> variables;
-    Eigen::Matrix<double, R, N> coefficients;
-    Vec<R> rhs = Vec<R>::Zero();
+    LinearConstraintRows<N, R> rows;
 };
 
 /// A linear constraint on one simplex's linear part: coefficients * vec(A_s) = rhs, in either
 /// layout (in the corner layout the engine composes it with A_s's map from the copies).
-template <int R, int D>
+template <int D, int R>
 struct LinearPartConstraint {
     Index simplex = 0;
-    Eigen::Matrix<double, R, D * D> coefficients;
-    Vec<R> rhs = Vec<R>::Zero();
+    LinearConstraintRows<D * D, R> rows;
 };
 
 template <int D>
@@ -224,13 +222,13 @@ class SimplexAssemblyEngine {
     TermId add_assembly_term(std::string name, E energy,
                              std::vector<std::array<Index, E::arity>> elements);
     /// Kind 2: linear constraints over named variables.
-    template <int R, int N>
+    template <int N, int R>
     TermId add_linear_constraints(std::string name,
-                                  const std::vector<LinearConstraint<R, N>>& constraints);
+                                  const std::vector<LinearConstraint<N, R>>& constraints);
     /// Kind 2: linear constraints on single linear parts, in either layout.
     template <int R>
     TermId add_linear_part_constraints(std::string name,
-                                       const std::vector<LinearPartConstraint<R, D>>& constraints);
+                                       const std::vector<LinearPartConstraint<D, R>>& constraints);
 
     const std::vector<TermId>& assembly_terms() const { return assembly_terms_; }
     /// Kinds 1 and 3.
@@ -341,47 +339,47 @@ TermId SimplexAssemblyEngine<D>::add_assembly_term(
 }
 
 template <int D>
-template <int R, int N>
+template <int N, int R>
 TermId SimplexAssemblyEngine<D>::add_linear_constraints(
-    std::string name, const std::vector<LinearConstraint<R, N>>& constraints) {
-    std::vector<Eigen::Matrix<double, R, N>> coefficients;
-    std::vector<Vec<R>> rhs;
+    std::string name, const std::vector<LinearConstraint<N, R>>& constraints) {
+    std::vector<LinearConstraintRows<N, R>> rows;
     std::vector<std::array<Index, N>> elements;
-    coefficients.reserve(constraints.size());
-    rhs.reserve(constraints.size());
+    rows.reserve(constraints.size());
     elements.reserve(constraints.size());
-    for (const LinearConstraint<R, N>& c : constraints) {
-        if (!c.coefficients.allFinite() || !c.rhs.allFinite()) {
-            throw InvalidArgumentError(name + ": constraint " + std::to_string(elements.size()) +
-                                       " has a non-finite coefficient");
+    for (const LinearConstraint<N, R>& c : constraints) {
+        for (Index v : c.variables) {
+            if (v < 0 || v >= problem_.num_variables()) {
+                throw InvalidArgumentError(name + ": constraint " +
+                                           std::to_string(elements.size()) + " names variable " +
+                                           std::to_string(v) + ", outside [0, " +
+                                           std::to_string(problem_.num_variables()) + ")");
+            }
         }
-        coefficients.push_back(c.coefficients);
-        rhs.push_back(c.rhs);
+        rows.push_back(c.rows);
         elements.push_back(c.variables);
     }
-    return add_assembly_term(std::move(name),
-                             LinearConstraintEnergy<R, N>(std::move(coefficients), std::move(rhs)),
+    return add_assembly_term(std::move(name), LinearConstraintEnergy<N, R>(std::move(rows)),
                              std::move(elements));
 }
 
 template <int D>
 template <int R>
 TermId SimplexAssemblyEngine<D>::add_linear_part_constraints(
-    std::string name, const std::vector<LinearPartConstraint<R, D>>& constraints) {
+    std::string name, const std::vector<LinearPartConstraint<D, R>>& constraints) {
     if (layout_ == Layout::kLinearParts) {
-        std::vector<LinearConstraint<R, kLinear>> rows;
+        std::vector<LinearConstraint<kLinear, R>> rows;
         rows.reserve(constraints.size());
-        for (const LinearPartConstraint<R, D>& c : constraints)
-            rows.push_back({linear_variables(c.simplex), c.coefficients, c.rhs});
-        return add_linear_constraints<R, kLinear>(std::move(name), rows);
+        for (const LinearPartConstraint<D, R>& c : constraints)
+            rows.push_back({linear_variables(c.simplex), c.rows});
+        return add_linear_constraints<kLinear, R>(std::move(name), rows);
     }
-    std::vector<LinearConstraint<R, kAffine>> rows;
+    std::vector<LinearConstraint<kAffine, R>> rows;
     rows.reserve(constraints.size());
-    for (const LinearPartConstraint<R, D>& c : constraints) {
-        rows.push_back(
-            {affine_variables(c.simplex), c.coefficients * linear_part_map(c.simplex), c.rhs});
+    for (const LinearPartConstraint<D, R>& c : constraints) {
+        rows.push_back({affine_variables(c.simplex),
+                        {c.rows.coefficients * linear_part_map(c.simplex), c.rows.rhs}});
     }
-    return add_linear_constraints<R, kAffine>(std::move(name), rows);
+    return add_linear_constraints<kAffine, R>(std::move(name), rows);
 }
 
 extern template class SimplexAssemblyEngine<2>;

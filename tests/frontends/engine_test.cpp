@@ -171,21 +171,21 @@ TEST(Engine, ALinearConstraintHoldsAtTheEnd) {
     SimplexAssemblyEngine<2> engine(p.A, p.T);
     p.add_assembly(engine);
     engine.add_simplex_energy("E_C", conformal_barrier<2>(p.frames));
-    std::vector<LinearConstraint<1, 6>> rows;
+    std::vector<LinearConstraint<6, 1>> rows;
     for (Index i = p.topology.vertex_begin[v]; i < p.topology.vertex_begin[v + 1]; ++i) {
         const Index s = p.topology.simplices_of_vertex[i];
         const auto G = engine.image_coefficients(s, p.frames.corner(s, p.local(s, v)));
-        rows.push_back({engine.affine_variables(s), G.row(0), Vec<1>(0.3)});
+        rows.push_back({engine.affine_variables(s), {G.row(0), Vec<1>(0.3)}});
     }
-    const TermId constraint = engine.add_linear_constraints<1, 6>("on a line", rows);
+    const TermId constraint = engine.add_linear_constraints<6, 1>("on a line", rows);
     const AssemblyRun run = engine.run({});
     EXPECT_EQ(run.stop, AssemblyStop::kAssembled) << run.message;
     const Eigen::VectorXd& x = engine.problem().variables();
     EXPECT_LT(engine.problem().term(constraint).value(x), 1e-12);
-    for (const LinearConstraint<1, 6>& row : rows) {
+    for (const LinearConstraint<6, 1>& row : rows) {
         Vec<6> xe;
         for (int k = 0; k < 6; ++k) xe[k] = x[row.variables[k]];
-        EXPECT_NEAR((row.coefficients * xe)(0), 0.3, 1e-12);
+        EXPECT_NEAR((row.rows.coefficients * xe)(0), 0.3, 1e-12);
     }
     expect_positive(engine);
 }
