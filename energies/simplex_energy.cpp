@@ -49,17 +49,6 @@ SimplexEnergy<D>::SimplexEnergy(SimplexEnergyOptions options, std::vector<double
 }
 
 template <int D>
-SimplexEnergy<D> SimplexEnergy<D>::subset(const std::vector<Index>& selected) const {
-    std::vector<double> weights;
-    std::vector<Mat<D>> references;
-    for (Index s : selected) {
-        weights.push_back(weights_[s]);
-        if (!references_.empty()) references.push_back(references_[s]);
-    }
-    return SimplexEnergy(options_, std::move(weights), std::move(references));
-}
-
-template <int D>
 double SimplexEnergy<D>::barrier_distortion(const Mat<D>& A) const {
     const MatrixInvariants<double> m = matrix_invariants<D>(A, false);
     if (!(m.J > 0.0)) return kInfinity;

@@ -16,6 +16,8 @@ std::string to_string(AssemblyStop stop) {
             return "assembled";
         case AssemblyStop::kConvergedAtLambdaMax:
             return "converged at lambda_max";
+        case AssemblyStop::kConverged:
+            return "converged";
         case AssemblyStop::kHook:
             return "stopped by the front-end";
         case AssemblyStop::kNoFreeVariables:
@@ -100,8 +102,9 @@ SimplexAssemblyEngine<D>::SimplexAssemblyEngine(
 }
 
 template <int D>
-SimplexAssemblyEngine<D>::SimplexAssemblyEngine(CornerTag, Eigen::VectorXd x, Index n)
-    : layout_(Layout::kCornerCopies), num_simplices_(n), problem_(std::move(x)) {
+SimplexAssemblyEngine<D>::SimplexAssemblyEngine(LayoutTag, Layout layout, Eigen::VectorXd x,
+                                                Index n)
+    : layout_(layout), num_simplices_(n), problem_(std::move(x)) {
     translation_offset_.assign(n, -1);
 }
 
@@ -119,10 +122,51 @@ SimplexAssemblyEngine<D> SimplexAssemblyEngine<D>::corner_copies(
     for (Index s = 0; s < n; ++s) {
         for (int k = 0; k <= D; ++k) x.template segment<D>(kAffine * s + D * k) = corners[s].col(k);
     }
-    SimplexAssemblyEngine engine(CornerTag{}, std::move(x), n);
+    SimplexAssemblyEngine engine(LayoutTag{}, Layout::kCornerCopies, std::move(x), n);
     engine.rest_corners_ = std::move(rest_corners);
     engine.rest_inverse_ = std::move(rest_edge_inverse);
     return engine;
+}
+
+template <int D>
+SimplexAssemblyEngine<D> SimplexAssemblyEngine<D>::vertex_positions(
+    const Eigen::MatrixXd& positions, std::vector<std::array<Index, D + 1>> simplices,
+    std::vector<Corners> rest_corners, std::vector<Mat<D>> rest_edge_inverse) {
+    const Index n = static_cast<Index>(simplices.size());
+    if (Index(rest_corners.size()) != n || Index(rest_edge_inverse.size()) != n) {
+        throw InvalidArgumentError(
+            "SimplexAssemblyEngine::vertex_positions: one set of rest corners and one rest edge "
+            "inverse per simplex");
+    }
+    if (positions.cols() != D) {
+        throw InvalidArgumentError("SimplexAssemblyEngine::vertex_positions: positions have " +
+                                   std::to_string(positions.cols()) + " columns, expected " +
+                                   std::to_string(D));
+    }
+    const Index nv = positions.rows();
+    for (Index s = 0; s < n; ++s) {
+        for (Index v : simplices[s]) {
+            if (v < 0 || v >= nv) {
+                throw InvalidArgumentError("SimplexAssemblyEngine::vertex_positions: simplex " +
+                                           std::to_string(s) + " has vertex " + std::to_string(v) +
+                                           ", outside [0, " + std::to_string(nv) + ")");
+            }
+        }
+    }
+    // Vertex-major coordinates, x[D v + c].
+    Eigen::VectorXd x(static_cast<Index>(D) * nv);
+    for (Index v = 0; v < nv; ++v) x.template segment<D>(D * v) = positions.row(v).transpose();
+    SimplexAssemblyEngine engine(LayoutTag{}, Layout::kVertexPositions, std::move(x), n);
+    engine.simplices_ = std::move(simplices);
+    engine.rest_corners_ = std::move(rest_corners);
+    engine.rest_inverse_ = std::move(rest_edge_inverse);
+    return engine;
+}
+
+template <int D>
+Index SimplexAssemblyEngine<D>::corner_variable(Index s, int k, int c) const {
+    if (layout_ == Layout::kVertexPositions) return Index(D) * simplices_[s][k] + c;
+    return Index(kAffine) * s + D * k + c;
 }
 
 template <int D>
@@ -148,7 +192,7 @@ std::array<Index, SimplexAssemblyEngine<D>::kLinear> SimplexAssemblyEngine<D>::l
 template <int D>
 bool SimplexAssemblyEngine<D>::has_translation(Index s) const {
     check_simplex(s);
-    return layout_ == Layout::kCornerCopies || translation_offset_[s] >= 0;
+    return layout_ != Layout::kLinearParts || translation_offset_[s] >= 0;
 }
 
 template <int D>
@@ -165,13 +209,32 @@ template <int D>
 std::array<Index, SimplexAssemblyEngine<D>::kAffine> SimplexAssemblyEngine<D>::affine_variables(
     Index s) const {
     check_simplex(s);
-    if (layout_ == Layout::kCornerCopies) return consecutive<kAffine>(Index(kAffine) * s);
+    if (layout_ != Layout::kLinearParts) {
+        std::array<Index, kAffine> corners;
+        for (int k = 0; k <= D; ++k)
+            for (int c = 0; c < D; ++c) corners[D * k + c] = corner_variable(s, k, c);
+        return corners;
+    }
     const std::array<Index, kLinear> a = linear_variables(s);
     const std::array<Index, D> t = translation_variables(s);
     std::array<Index, kAffine> both;
     std::copy(a.begin(), a.end(), both.begin());
     std::copy(t.begin(), t.end(), both.begin() + kLinear);
     return both;
+}
+
+template <int D>
+std::array<Index, D> SimplexAssemblyEngine<D>::vertex_variables(Index v) const {
+    if (layout_ != Layout::kVertexPositions) {
+        throw InvalidArgumentError(
+            "SimplexAssemblyEngine: only the vertex layout has vertex variables");
+    }
+    if (v < 0 || Index(D) * v >= problem_.num_variables()) {
+        throw InvalidArgumentError("SimplexAssemblyEngine: vertex " + std::to_string(v) +
+                                   " outside [0, " + std::to_string(problem_.num_variables() / D) +
+                                   ")");
+    }
+    return consecutive<D>(Index(D) * v);
 }
 
 template <int D>
@@ -215,7 +278,7 @@ typename SimplexAssemblyEngine<D>::LinearPartMap SimplexAssemblyEngine<D>::linea
 template <int D>
 void SimplexAssemblyEngine<D>::fix_simplex(Index s) {
     check_simplex(s);
-    if (layout_ == Layout::kCornerCopies) {
+    if (layout_ != Layout::kLinearParts) {
         for (Index v : affine_variables(s)) problem_.set_fixed(v);
         return;
     }
@@ -226,12 +289,17 @@ void SimplexAssemblyEngine<D>::fix_simplex(Index s) {
 }
 
 template <int D>
+void SimplexAssemblyEngine<D>::fix_vertex(Index v) {
+    for (Index i : vertex_variables(v)) problem_.set_fixed(i);
+}
+
+template <int D>
 Mat<D> SimplexAssemblyEngine<D>::linear_part(const Eigen::VectorXd& x, Index s) const {
-    if (layout_ == Layout::kCornerCopies) {
+    if (layout_ != Layout::kLinearParts) {
         Mat<D> edges;
         for (int k = 0; k < D; ++k) {
-            edges.col(k) = x.template segment<D>(kAffine * s + D * (k + 1)) -
-                           x.template segment<D>(kAffine * s);
+            edges.col(k) = x.template segment<D>(corner_variable(s, k + 1, 0)) -
+                           x.template segment<D>(corner_variable(s, 0, 0));
         }
         return edges * rest_inverse_[s];
     }
@@ -249,11 +317,11 @@ template <int D>
 std::vector<std::pair<Index, Vec<D>>> SimplexAssemblyEngine<D>::known_translations(
     const Eigen::VectorXd& x) const {
     std::vector<std::pair<Index, Vec<D>>> known;
-    if (layout_ == Layout::kCornerCopies) {
+    if (layout_ != Layout::kLinearParts) {
         for (Index s = 0; s < num_simplices_; ++s) {
             // T maps the frame's origin: mean of the copies minus A times the mean rest corner.
             Vec<D> mean = Vec<D>::Zero();
-            for (int k = 0; k <= D; ++k) mean += x.template segment<D>(kAffine * s + D * k);
+            for (int k = 0; k <= D; ++k) mean += x.template segment<D>(corner_variable(s, k, 0));
             mean /= double(D + 1);
             const Vec<D> rest_mean = rest_corners_[s].rowwise().mean();
             known.emplace_back(s, mean - linear_part(x, s) * rest_mean);
@@ -263,6 +331,17 @@ std::vector<std::pair<Index, Vec<D>>> SimplexAssemblyEngine<D>::known_translatio
     for (Index s : translated_)
         known.emplace_back(s, x.template segment<D>(translation_offset_[s]));
     return known;
+}
+
+template <int D>
+Eigen::MatrixXd SimplexAssemblyEngine<D>::positions(const Eigen::VectorXd& x) const {
+    if (layout_ != Layout::kVertexPositions) {
+        throw InvalidArgumentError("SimplexAssemblyEngine: only the vertex layout has positions");
+    }
+    const Index nv = x.size() / D;
+    Eigen::MatrixXd p(nv, D);
+    for (Index v = 0; v < nv; ++v) p.row(v) = x.template segment<D>(D * v).transpose();
+    return p;
 }
 
 template <int D>
@@ -278,8 +357,10 @@ template <int D>
 void SimplexAssemblyEngine<D>::declare_blocks() {
     if (blocks_declared_) return;
     blocks_declared_ = true;
-    if (layout_ == Layout::kCornerCopies) {
-        problem_.add_variable_block("vertex copies", 0, problem_.num_variables());
+    if (layout_ != Layout::kLinearParts) {
+        problem_.add_variable_block(
+            layout_ == Layout::kCornerCopies ? "vertex copies" : "vertex positions", 0,
+            problem_.num_variables());
         return;
     }
     const Index linear_end = Index(kLinear) * num_simplices_;
@@ -297,6 +378,9 @@ AssemblyRun SimplexAssemblyEngine<D>::run(const AssemblyEngineOptions& options,
     Stopwatch watch;
     declare_blocks();
     AssemblyRun result;
+    // Without assembly terms there is nothing to schedule: Newton's own relative-change and
+    // decrement tests end it (the gradient test is scale-dependent and left out).
+    const bool schedule = !assembly_terms_.empty();
     bool stopped = false;  // by the schedule's own test or the hook
     double lambda = options.lambda_min;
     auto set_lambda = [&](double value) {
@@ -306,17 +390,23 @@ AssemblyRun SimplexAssemblyEngine<D>::run(const AssemblyEngineOptions& options,
             problem_.set_hessian_shift(translation_block_, options.translation_shift * lambda);
     };
     set_lambda(lambda);
-    log_line(hooks.logger, "iter      energy   assembly     lambda      step  ls     time");
+    if (schedule)
+        log_line(hooks.logger, "iter      energy   assembly     lambda      step  ls     time");
     NewtonOptions newton;
     newton.max_iterations = options.max_iterations;
     newton.max_time_seconds = options.max_time_seconds;
-    // The schedule decides convergence (below); Newton's own tests would stop it at any lambda.
-    newton.gradient_tolerance = newton.decrement_tolerance = newton.function_tolerance = 0.0;
+    newton.gradient_tolerance = 0.0;
+    if (schedule) {
+        // The schedule decides convergence (below); Newton's tests would stop it at any lambda.
+        newton.decrement_tolerance = newton.function_tolerance = 0.0;
+    } else {
+        newton.function_tolerance = options.energy_tolerance;
+    }
     newton.projection = options.projection;
     newton.projection_epsilon = options.projection_epsilon;
     newton.linear_solver = options.linear_solver;
     newton.num_threads = options.num_threads;
-    double last_assembly = kInfinity;
+    double last_assembly = schedule ? kInfinity : 0.0;
     newton.callbacks.push_back([&](const IterationContext& c) {
         double assembly_value = 0.0;
         for (TermId t : assembly_terms_) assembly_value += c.term_values[t];
@@ -328,16 +418,23 @@ AssemblyRun SimplexAssemblyEngine<D>::run(const AssemblyEngineOptions& options,
         row.energy = c.record.energy;
         row.assembly = assembly_value;
         row.barrier = barrier_value;
-        row.lambda = lambda;
+        row.lambda = schedule ? lambda : 0.0;
         row.step = c.record.step_length;
         row.line_search_trials = c.record.line_search_trials;
         row.time = c.record.cumulative_time;
         result.records.push_back(row);
         char line[160];
-        std::snprintf(line, sizeof line, "%4d  %10.4e  %9.3e  %9.3e  %8.2e  %2d  %6.2fs",
-                      row.iteration, row.energy, row.assembly, row.lambda, std::max(row.step, 0.0),
-                      std::max(row.line_search_trials, 0), row.time);
-        log_line(hooks.logger, line);
+        if (schedule) {
+            std::snprintf(line, sizeof line, "%4d  %10.4e  %9.3e  %9.3e  %8.2e  %2d  %6.2fs",
+                          row.iteration, row.energy, row.assembly, row.lambda,
+                          std::max(row.step, 0.0), std::max(row.line_search_trials, 0), row.time);
+            log_line(hooks.logger, line);
+        } else if (row.iteration > 0) {
+            std::snprintf(line, sizeof line, "P%3d  %10.4e  %9s  %9s  %8.2e  %2d  %6.2fs",
+                          row.iteration, row.energy, "-", "-", row.step, row.line_search_trials,
+                          row.time);
+            log_line(hooks.logger, line);
+        }
         if (hooks.after_iteration) {
             std::string reason = hooks.after_iteration(row, c.problem.variables());
             if (!reason.empty()) {
@@ -347,6 +444,7 @@ AssemblyRun SimplexAssemblyEngine<D>::run(const AssemblyEngineOptions& options,
                 return CallbackResult::kStopSuccess;
             }
         }
+        if (!schedule) return CallbackResult::kContinue;
         // Converged: assembled, or at lambda_max, where the weights no longer change and the
         // schedule can do nothing more (the paper runs on to its 200 iterations; on tlc/stgc-3d
         // that was 100 iterations of steps changing E by 1e-15 of itself).
@@ -369,8 +467,11 @@ AssemblyRun SimplexAssemblyEngine<D>::run(const AssemblyEngineOptions& options,
     result.newton = NewtonSolver(newton).solve(problem_);
     if (!stopped) {
         switch (result.newton.termination) {
-            case TerminationType::kConverged:  // only "no free variables" with zero tolerances
-                result.stop = AssemblyStop::kNoFreeVariables;
+            case TerminationType::kConverged:
+                // With the schedule's zero tolerances only "no free variables" converges.
+                result.stop = !schedule ? AssemblyStop::kConverged : AssemblyStop::kNoFreeVariables;
+                if (problem_.num_free_variables() == 0)
+                    result.stop = AssemblyStop::kNoFreeVariables;
                 break;
             case TerminationType::kMaxIterations:
                 result.stop = AssemblyStop::kMaxIterations;
@@ -395,36 +496,11 @@ AssemblyRun SimplexAssemblyEngine<D>::run(const AssemblyEngineOptions& options,
         }
         result.message = result.newton.message;
     }
-    result.final_lambda = lambda;
+    result.final_lambda = schedule ? lambda : 0.0;
     result.final_assembly = last_assembly;
     result.assembled = last_assembly < options.assembly_tolerance;
     result.time = watch.seconds();
     return result;
-}
-
-NewtonSummary minimize_without_schedule(Problem& problem, const AssemblyEngineOptions& options,
-                                        const Logger& logger) {
-    options.validate();
-    NewtonOptions newton;
-    newton.max_iterations = options.max_iterations;
-    newton.max_time_seconds = options.max_time_seconds;
-    newton.gradient_tolerance = 0.0;  // scale-dependent; the two relative tests decide
-    newton.function_tolerance = options.energy_tolerance;
-    newton.projection = options.projection;
-    newton.projection_epsilon = options.projection_epsilon;
-    newton.linear_solver = options.linear_solver;
-    newton.num_threads = options.num_threads;
-    newton.callbacks.push_back([&](const IterationContext& c) {
-        if (c.record.iteration > 0) {
-            char line[160];
-            std::snprintf(line, sizeof line, "P%3d  %10.4e  %9s  %9s  %8.2e  %2d  %6.2fs",
-                          c.record.iteration, c.record.energy, "-", "-", c.record.step_length,
-                          c.record.line_search_trials, c.record.cumulative_time);
-            log_line(logger, line);
-        }
-        return CallbackResult::kContinue;
-    });
-    return NewtonSolver(newton).solve(problem);
 }
 
 template class SimplexAssemblyEngine<2>;

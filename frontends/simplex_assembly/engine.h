@@ -5,30 +5,34 @@
 // -----------
 // The engine optimizes per-simplex affine maps (A_s, T_s) of d = 2 or 3 and knows no mesh.
 //
-// Variables (4.4: "we stack all A_i and T_p ... to form the variable vector X"), in one of two
+// Variables (4.4: "we stack all A_i and T_p ... to form the variable vector X"), in one of three
 // layouts:
-//   linear parts   vec(A_s) (column-major) for every simplex s in [0, n), in whatever frame the
-//                  caller uses for s, then T_s for the simplices the caller lists: r-SA the tagged
-//                  simplices Omega_s of 4.3, f-SA all of them (5.1), the integrable field of 4.5
-//                  none;
-//   corner copies  v-SA (5.1): the images of each simplex's D + 1 rest corners; A_s and T_s are
-//                  linear in them (A_s = [x_1 - x_0 | ... | x_D - x_0] E_s^-1).
-// linear_variables(s), translation_variables(s), affine_variables(s) and image_coefficients(s, u)
-// name a simplex's variables, so that no front-end builds flat indices by hand.
+//   linear parts      vec(A_s) (column-major) for every simplex s in [0, n), in whatever frame
+//                     the caller uses for s, then T_s for the simplices the caller lists: r-SA the
+//                     tagged simplices Omega_s of 4.3, f-SA all of them (5.1), the integrable
+//                     field of 4.5 none;
+//   corner copies     v-SA (5.1): the images of each simplex's D + 1 rest corners; A_s and T_s
+//                     are linear in them (A_s = [x_1 - x_0 | ... | x_D - x_0] E_s^-1);
+//   vertex positions  the same with the copies of a mesh vertex identified: one position per
+//                     vertex (the mesh driver's vertex stage, after assembly; Newton on vertex
+//                     positions from a valid start).
+// linear_variables(s), translation_variables(s), affine_variables(s), vertex_variables(v) and
+// image_coefficients(s, u) name the variables, so that no front-end builds flat indices by hand.
 //
 // Terms, three kinds (E of Eq. 10 is their sum):
-//   1. per-simplex energies of A (arity D*D; element s is simplex s, a subset goes through
-//      ReindexedEnergy): the mapping energy E_m (a built-in distortion, |A - A0|^2, a user's
-//      energy of A) and barriers E_C (DistortionBarrier, bounded or not, several at once with
-//      their own bounds). In the corner layout they are evaluated through the copies by
-//      VertexSimplexEnergy, the adapter the mesh driver's vertex stage uses too.
-//   2. assembly terms, squares of linear functions of (A, T), weighted by lambda: edge (Eq. 7),
-//      handle (Eq. 8), vertex (Eq. 9), full-variable (Eqs. 2, 3), the curl of Eq. 11 with its
-//      fixed rotations, and any linear constraint |C_e x - b_e|^2 (LinearConstraintEnergy:
-//      planarity a^T A_i e = 0, a vertex on a plane, a user's own). Their unweighted sum is
+//   1. per-simplex energies of A (arity D*D; element k on simplex k, or on a listed simplex):
+//      the mapping energy E_m (a built-in distortion, |A - A0|^2, a user's energy of A) and
+//      barriers E_C (DistortionBarrier on any distortion, bounded or not, several at once with
+//      their own bounds). In the corner and vertex layouts they are evaluated through the
+//      positions by VertexSimplexEnergy (A = X E^-1, Hessian projected in A).
+//   2. assembly terms, squares of linear functions of the variables, weighted by lambda: edge
+//      (Eq. 7), handle (Eq. 8), vertex (Eq. 9), full-variable (Eqs. 2, 3), the curl of Eq. 11
+//      with its fixed rotations, and any linear constraint |C_e x - b_e|^2
+//      (LinearConstraintEnergy: PolyCube planarity a^T A_i e = 0, a vertex on a plane, a user's
+//      own; add_linear_constraints, add_linear_part_constraints). Their unweighted sum is
 //      E~_assembly.
-//   3. barriers over several simplices: the boundary-angle barrier E_theta of 5.1 (2D), the 3D
-//      angle barriers of PolyCube.
+//   3. barriers over several simplices (add_barrier): the boundary-angle barrier E_theta of 5.1
+//      (2D), the 3D angle barriers of PolyCube.
 // Kinds 1 and 3 form "the barrier side" mu E_m + E_C of the schedule.
 //
 // run() is projected Newton (optim/newton_solver.h) with
@@ -43,13 +47,14 @@
 //     that same change (ours: the weights no longer move, E has converged without assembling); or
 //     the front-end's hook (the mesh driver's hand-over by Eq. 6); or max_iterations,
 //     max_time_seconds, or a numerical failure of Newton. The result says which (AssemblyStop).
-// minimize_without_schedule() is the same Newton, Hessian modification and relative-change test
-// for a problem without assembly terms (the mesh driver's vertex stage).
+//   Without assembly terms there is no schedule: plain projected Newton to the same relative
+//   change of E or a vanishing Newton decrement (AssemblyStop::kConverged).
 //
 // What a front-end supplies: the layout and the start (disassembled, inside the barriers'
-// feasible set, 4.2), the terms, the fixed simplices, and a hook called after every iteration.
-// Recovery, the vertex stage and verification are the front-end's (simplex_assembly.h).
-// This is the only place with lambda-schedule, termination or Hessian-modification logic.
+// feasible set, 4.2), the terms, the fixed simplices or vertices, and a hook called after every
+// iteration. Recovery, the vertex stage and verification are the mesh driver's
+// (simplex_assembly.h). This is the only place with lambda-schedule, termination or
+// Hessian-modification logic.
 
 #include <array>
 #include <functional>
@@ -61,64 +66,13 @@
 #include "energies/linear_constraint_energy.h"
 #include "energies/reindexed_energy.h"
 #include "energies/vertex_copy_energies.h"
+#include "frontends/simplex_assembly/engine_options.h"
 #include "optim/errors.h"
-#include "optim/hessian_projection.h"
-#include "optim/linear_solver.h"
 #include "optim/logger.h"
 #include "optim/newton_summary.h"
 #include "optim/problem.h"
 
 namespace sa {
-
-/// One iteration of the assembly, as the paper's Figure 4 plots it.
-struct AssemblyRecord {
-    int iteration = 0;
-    double energy = 0.0;    ///< E at the lambda of this step
-    double assembly = 0.0;  ///< E~_assembly (unweighted)
-    double barrier = 0.0;   ///< the barrier side mu E_m + E_C (+ kind-3 barriers), weighted
-    double lambda = 0.0;    ///< lambda used for this step
-    double step = -1.0;     ///< accepted step length (-1 at iteration 0)
-    int line_search_trials = -1;
-    double time = 0.0;  ///< seconds since the optimization started
-};
-
-/// Why run() stopped.
-enum class AssemblyStop {
-    kAssembled,             ///< E~ < assembly_tolerance and E stopped changing (the paper's test)
-    kConvergedAtLambdaMax,  ///< lambda at lambda_max and E stopped changing, not assembled
-    kHook,                  ///< the front-end's hook stopped it (its reason is the message)
-    kNoFreeVariables,       ///< every variable is fixed
-    kMaxIterations,
-    kMaxTime,
-    kLineSearchFailed,
-    kFactorizationFailed,
-    kInfeasibleStart,  ///< a barrier is +inf at the start: the start is outside the feasible set
-    kNonFinite,
-};
-std::string to_string(AssemblyStop stop);
-
-/// The schedule, Hessian modification and termination, with the paper's constants (4.4).
-struct AssemblyEngineOptions {
-    double lambda_min = 1e3;
-    double lambda_max = 1e16;
-    /// E~_assembly below which the simplices count as assembled.
-    double assembly_tolerance = 1e-12;
-    /// Relative change of E within a step below which E has converged (0 = never).
-    double energy_tolerance = 1e-8;
-    int max_iterations = 200;
-    double max_time_seconds = kInfinity;
-    /// Per-element Hessian projection (DESIGN.md: clamping converged in fewer iterations than
-    /// the paper's shift, kShift).
-    ProjectionMode projection = ProjectionMode::kClamp;
-    double projection_epsilon = 1e-8;
-    /// Hessian-only shift on the translations, times lambda (the paper's 1e-6; 0 = none).
-    double translation_shift = 0.0;
-    LinearSolverType linear_solver = LinearSolverType::kAuto;
-    int num_threads = 0;  ///< 0 = all cores; results do not depend on it
-
-    /// Throws InvalidArgumentError naming the first bad field and its value.
-    void validate() const;
-};
 
 /// What the front-end does between iterations.
 struct AssemblyHooks {
@@ -141,15 +95,16 @@ struct AssemblyRun {
     double time = 0.0;                    ///< seconds in run()
 };
 
-/// A linear constraint over N named variables: coefficients * x[variables] = rhs (R rows).
+/// A linear constraint over N named variables: rows.coefficients * x[variables] = rows.rhs.
 template <int N, int R>
 struct LinearConstraint {
     std::array<Index, N> variables;
     LinearConstraintRows<N, R> rows;
 };
 
-/// A linear constraint on one simplex's linear part: coefficients * vec(A_s) = rhs, in either
-/// layout (in the corner layout the engine composes it with A_s's map from the copies).
+/// A linear constraint on one simplex's linear part: coefficients * vec(A_s) = rhs, in any
+/// layout (in the corner and vertex layouts the engine composes it with A_s's map from the
+/// positions).
 template <int D, int R>
 struct LinearPartConstraint {
     Index simplex = 0;
@@ -160,11 +115,11 @@ template <int D>
 class SimplexAssemblyEngine {
   public:
     static constexpr int kLinear = D * D;      ///< variables of vec(A_s)
-    static constexpr int kAffine = D * D + D;  ///< of (vec(A_s), T_s), or of the D + 1 copies
+    static constexpr int kAffine = D * D + D;  ///< of (vec(A_s), T_s), or of the D + 1 positions
     using Corners = Eigen::Matrix<double, D, D + 1>;
     using ImageMap = Eigen::Matrix<double, D, kAffine>;             ///< see image_coefficients()
     using LinearPartMap = Eigen::Matrix<double, kLinear, kAffine>;  ///< see linear_part_map()
-    enum class Layout { kLinearParts, kCornerCopies };
+    enum class Layout { kLinearParts, kCornerCopies, kVertexPositions };
 
     /// The linear-part layout: A_s = linear[s], then T_s for the listed simplices, in that order.
     SimplexAssemblyEngine(const std::vector<Mat<D>>& linear,
@@ -174,45 +129,56 @@ class SimplexAssemblyEngine {
     static SimplexAssemblyEngine corner_copies(const std::vector<Corners>& corners,
                                                std::vector<Corners> rest_corners,
                                                std::vector<Mat<D>> rest_edge_inverse);
+    /// The vertex layout: `positions` #V x D (row v the image of vertex v), simplex s has the
+    /// vertices simplices[s] (corner k of rest_corners[s] is vertex simplices[s][k]).
+    static SimplexAssemblyEngine vertex_positions(const Eigen::MatrixXd& positions,
+                                                  std::vector<std::array<Index, D + 1>> simplices,
+                                                  std::vector<Corners> rest_corners,
+                                                  std::vector<Mat<D>> rest_edge_inverse);
 
     Layout layout() const { return layout_; }
     Index num_simplices() const { return num_simplices_; }
     Problem& problem() { return problem_; }
     const Problem& problem() const { return problem_; }
 
-    // Variables of a simplex. Each throws InvalidArgumentError where the layout has none.
+    // Variables. Each throws InvalidArgumentError where the layout has none.
     /// vec(A_s) (linear-part layout).
     std::array<Index, kLinear> linear_variables(Index s) const;
     bool has_translation(Index s) const;
     /// T_s (linear-part layout, a simplex given a translation).
     std::array<Index, D> translation_variables(Index s) const;
-    /// (vec(A_s), T_s) in the linear-part layout, the D + 1 copies in the corner layout.
+    /// (vec(A_s), T_s) in the linear-part layout, the D + 1 positions of its corners in the
+    /// others.
     std::array<Index, kAffine> affine_variables(Index s) const;
+    /// The position of vertex v (vertex layout).
+    std::array<Index, D> vertex_variables(Index v) const;
     /// The image A_s u + T_s of the rest point u (in s's frame) as a linear function of
     /// affine_variables(s): image = coefficients * x[affine_variables(s)].
     ImageMap image_coefficients(Index s, const Vec<D>& u) const;
     /// vec(A_s) as a linear function of affine_variables(s): vec(A_s) = map * x[affine(s)]
-    /// ([I 0] in the linear-part layout; [x_1 - x_0 | ...] E_s^-1 in the corner layout).
+    /// ([I 0] in the linear-part layout; [x_1 - x_0 | ...] E_s^-1 in the others).
     LinearPartMap linear_part_map(Index s) const;
 
-    /// Keeps A_s and T_s (or its copies) at their start.
+    /// Keeps A_s and T_s (or its positions) at their start.
     void fix_simplex(Index s);
+    /// Keeps vertex v at its start (vertex layout).
+    void fix_vertex(Index v);
 
     // Reading the variables back.
     Mat<D> linear_part(const Eigen::VectorXd& x, Index s) const;
     std::vector<Mat<D>> linear_parts(const Eigen::VectorXd& x) const;
     /// The translations the variables determine: the listed simplices (linear-part layout) or
-    /// every simplex (corner layout: the image of the frame's origin).
+    /// every simplex (the others: the image of the frame's origin).
     std::vector<std::pair<Index, Vec<D>>> known_translations(const Eigen::VectorXd& x) const;
+    /// Vertex layout: the positions, #V x D.
+    Eigen::MatrixXd positions(const Eigen::VectorXd& x) const;
 
     // Terms. Each returns the problem's TermId.
-    /// Kind 1 on every simplex: element s of `energy` is simplex s.
+    /// Kind 1: element k of `energy` on simplex simplices[k], or element s on simplex s for every
+    /// simplex when `simplices` is empty.
     template <ElementEnergy E>
-    TermId add_simplex_energy(std::string name, E energy, double weight = 1.0);
-    /// Kind 1 on `simplices` only: element s of `energy` is still simplex s (re-indexed).
-    template <ElementEnergy E>
-    TermId add_simplex_energy(std::string name, std::shared_ptr<const E> energy,
-                              std::vector<Index> simplices, double weight = 1.0);
+    TermId add_simplex_energy(std::string name, E energy, std::vector<Index> simplices = {},
+                              double weight = 1.0);
     /// Kind 3: a barrier over several simplices, on variables named by the helpers above.
     template <ElementEnergy E>
     TermId add_barrier(std::string name, E energy,
@@ -221,11 +187,12 @@ class SimplexAssemblyEngine {
     template <ElementEnergy E>
     TermId add_assembly_term(std::string name, E energy,
                              std::vector<std::array<Index, E::arity>> elements);
-    /// Kind 2: linear constraints over named variables.
+    /// Kind 2: linear constraints over named variables. Throws InvalidArgumentError naming the
+    /// term and constraint for a variable out of range or a non-finite coefficient.
     template <int N, int R>
     TermId add_linear_constraints(std::string name,
                                   const std::vector<LinearConstraint<N, R>>& constraints);
-    /// Kind 2: linear constraints on single linear parts, in either layout.
+    /// Kind 2: linear constraints on single linear parts, in any layout.
     template <int R>
     TermId add_linear_part_constraints(std::string name,
                                        const std::vector<LinearPartConstraint<D, R>>& constraints);
@@ -240,77 +207,56 @@ class SimplexAssemblyEngine {
     AssemblyRun run(const AssemblyEngineOptions& options, const AssemblyHooks& hooks = {});
 
   private:
-    struct CornerTag {};
-    SimplexAssemblyEngine(CornerTag, Eigen::VectorXd x, Index n);
+    struct LayoutTag {};
+    SimplexAssemblyEngine(LayoutTag, Layout layout, Eigen::VectorXd x, Index n);
     void check_simplex(Index s) const;
     void declare_blocks();
+    /// Corner and vertex layouts: variable of coordinate c of corner k of simplex s.
+    Index corner_variable(Index s, int k, int c) const;
 
     Layout layout_;
     Index num_simplices_;
     Problem problem_;
-    std::vector<Index> translation_offset_;  ///< per simplex: offset of T_s, or -1
-    std::vector<Index> translated_;          ///< simplices with T_s, in variable order
-    std::vector<Corners> rest_corners_;      ///< corner layout
-    std::vector<Mat<D>> rest_inverse_;       ///< corner layout
+    std::vector<Index> translation_offset_;            ///< per simplex: offset of T_s, or -1
+    std::vector<Index> translated_;                    ///< simplices with T_s, in order
+    std::vector<Corners> rest_corners_;                ///< corner and vertex layouts
+    std::vector<Mat<D>> rest_inverse_;                 ///< corner and vertex layouts
+    std::vector<std::array<Index, D + 1>> simplices_;  ///< vertex layout
     std::vector<TermId> assembly_terms_, barrier_terms_;
     BlockId translation_block_ = -1;
     bool blocks_declared_ = false;
 };
 
-/// Newton on a problem without assembly terms (the vertex stage) with the engine's Hessian
-/// modification and termination: E changes by less than energy_tolerance (relative) in a step,
-/// the Newton decrement vanishes, or the limits. Rows "P<k> ..." go to `logger`.
-NewtonSummary minimize_without_schedule(Problem& problem, const AssemblyEngineOptions& options,
-                                        const Logger& logger = {});
-
 // ---- templates -------------------------------------------------------------------------------
 
 template <int D>
 template <ElementEnergy E>
-TermId SimplexAssemblyEngine<D>::add_simplex_energy(std::string name, E energy, double weight) {
-    static_assert(E::arity == kLinear, "a per-simplex energy is an energy of vec(A)");
-    TermId id;
-    if (layout_ == Layout::kLinearParts) {
-        std::vector<std::array<Index, kLinear>> elements(num_simplices_);
-        for (Index s = 0; s < num_simplices_; ++s) elements[s] = linear_variables(s);
-        id = problem_.add_term(std::move(name), std::move(energy), std::move(elements), weight);
-    } else {
-        std::vector<std::array<Index, kAffine>> elements(num_simplices_);
-        for (Index s = 0; s < num_simplices_; ++s) elements[s] = affine_variables(s);
-        id = problem_.add_term(std::move(name),
-                               VertexSimplexEnergy<D, E>(std::move(energy), rest_inverse_),
-                               std::move(elements), weight);
-    }
-    barrier_terms_.push_back(id);
-    return id;
-}
-
-template <int D>
-template <ElementEnergy E>
-TermId SimplexAssemblyEngine<D>::add_simplex_energy(std::string name,
-                                                    std::shared_ptr<const E> energy,
+TermId SimplexAssemblyEngine<D>::add_simplex_energy(std::string name, E energy,
                                                     std::vector<Index> simplices, double weight) {
     static_assert(E::arity == kLinear, "a per-simplex energy is an energy of vec(A)");
+    if (simplices.empty()) {
+        simplices.resize(num_simplices_);
+        for (Index s = 0; s < num_simplices_; ++s) simplices[s] = s;
+    }
     for (Index s : simplices) check_simplex(s);
     TermId id;
     if (layout_ == Layout::kLinearParts) {
         std::vector<std::array<Index, kLinear>> elements;
+        elements.reserve(simplices.size());
         for (Index s : simplices) elements.push_back(linear_variables(s));
-        id = problem_.add_term(std::move(name),
-                               ReindexedEnergy<E>(std::move(energy), std::move(simplices)),
-                               std::move(elements), weight);
+        id = problem_.add_term(std::move(name), std::move(energy), std::move(elements), weight);
     } else {
         std::vector<std::array<Index, kAffine>> elements;
         std::vector<Mat<D>> rest_inverse;
+        elements.reserve(simplices.size());
+        rest_inverse.reserve(simplices.size());
         for (Index s : simplices) {
             elements.push_back(affine_variables(s));
             rest_inverse.push_back(rest_inverse_[s]);
         }
-        id = problem_.add_term(std::move(name),
-                               VertexSimplexEnergy<D, ReindexedEnergy<E>>(
-                                   ReindexedEnergy<E>(std::move(energy), std::move(simplices)),
-                                   std::move(rest_inverse)),
-                               std::move(elements), weight);
+        id = problem_.add_term(
+            std::move(name), VertexSimplexEnergy<D, E>(std::move(energy), std::move(rest_inverse)),
+            std::move(elements), weight);
     }
     barrier_terms_.push_back(id);
     return id;
@@ -354,6 +300,10 @@ TermId SimplexAssemblyEngine<D>::add_linear_constraints(
                                            std::to_string(v) + ", outside [0, " +
                                            std::to_string(problem_.num_variables()) + ")");
             }
+        }
+        if (!c.rows.coefficients.allFinite() || !c.rows.rhs.allFinite()) {
+            throw InvalidArgumentError(name + ": constraint " + std::to_string(elements.size()) +
+                                       " has a non-finite coefficient");
         }
         rows.push_back(c.rows);
         elements.push_back(c.variables);

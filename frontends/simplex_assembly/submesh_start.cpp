@@ -35,9 +35,9 @@ std::vector<Index> bad_simplices(const PreparedProblem<D>& p, const std::vector<
     tbb::parallel_for(Index(0), n, [&](Index s) {
         const double det = A[s].determinant();
         det_volume[s] = std::abs(det) * p.frames.volume[s];
-        rejected[s] = !std::isfinite(det) ||
-                      !std::isfinite(p.energy->value(s, Eigen::Map<const Vec<D * D>>(A[s].data())));
+        rejected[s] = !std::isfinite(det);
     });
+    for (const auto& energy : p.assembly.energies) energy->mark_infeasible(A, rejected);
     double largest = 0.0;
     for (double v : det_volume) {
         if (std::isfinite(v)) largest = std::max(largest, v);
