@@ -8,6 +8,7 @@
 #include "energies/boundary_angle_energy.h"
 #include "energies/distortion.h"
 #include "geometry/disassembly.h"
+#include "geometry/local_injectivity.h"
 #include "geometry/vertex_recovery.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
@@ -251,6 +252,14 @@ void verify_result(const MappingProblem& input, const SimplexAssemblyOptions& op
     v.simplices = original.num_simplices();
     v.inverted = result.final_quality.inverted;
     v.degenerate = result.final_quality.degenerate;
+    if (v.inverted == 0 && v.degenerate == 0) {
+        // Every simplex positive does not make the map locally injective: a branch point wraps
+        // its star twice with every simplex positive (geometry/local_injectivity.h).
+        const MeshTopology topology = mesh_topology(original, input.source);
+        v.branched = static_cast<Index>(
+            D == 2 ? branched_vertices(original, topology, result.positions).size()
+                   : branched_edges(original, topology, result.positions).size());
+    }
     v.handles = static_cast<Index>(input.handles.size());
     for (std::size_t k = 0; k < input.handles.size(); ++k) {
         const Eigen::RowVectorXd target =
