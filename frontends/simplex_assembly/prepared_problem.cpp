@@ -257,7 +257,7 @@ double mesh_energy(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions
 
 template <int D>
 void verify_result(const MappingProblem& input, const SimplexAssemblyOptions& options,
-                   SimplexAssemblyResult& result) {
+                   SimplexAssemblyResult& result, const MeshTopology* topology) {
     const SimplicialMesh& original = input.mesh;
     const RestFrames<D> rest = rest_frames<D>(original);
     const std::vector<Mat<D>> out = linear_parts<D>(original, rest, result.positions);
@@ -270,10 +270,11 @@ void verify_result(const MappingProblem& input, const SimplexAssemblyOptions& op
     if (v.inverted == 0 && v.degenerate == 0) {
         // Every simplex positive does not make the map locally injective: a branch point wraps
         // its star twice with every simplex positive (geometry/local_injectivity.h).
-        const MeshTopology topology = mesh_topology(original, input.source);
-        v.branched = static_cast<Index>(
-            D == 2 ? branched_vertices(original, topology, result.positions).size()
-                   : branched_edges(original, topology, result.positions).size());
+        const MeshTopology own = topology ? MeshTopology{} : mesh_topology(original, input.source);
+        const MeshTopology& t = topology ? *topology : own;
+        v.branched =
+            static_cast<Index>(D == 2 ? branched_vertices(original, t, result.positions).size()
+                                      : branched_edges(original, t, result.positions).size());
     }
     v.handles = static_cast<Index>(input.handles.size());
     for (std::size_t k = 0; k < input.handles.size(); ++k) {
@@ -305,8 +306,8 @@ template std::unique_ptr<PreparedProblem<3>> prepare_problem<3>(const MappingPro
 template double mesh_energy<2>(const PreparedProblem<2>&, const Eigen::MatrixXd&);
 template double mesh_energy<3>(const PreparedProblem<3>&, const Eigen::MatrixXd&);
 template void verify_result<2>(const MappingProblem&, const SimplexAssemblyOptions&,
-                               SimplexAssemblyResult&);
+                               SimplexAssemblyResult&, const MeshTopology*);
 template void verify_result<3>(const MappingProblem&, const SimplexAssemblyOptions&,
-                               SimplexAssemblyResult&);
+                               SimplexAssemblyResult&, const MeshTopology*);
 
 }  // namespace sa

@@ -207,7 +207,7 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
             result.positions.row(v) = prepared->initial_map.row(v);  // untouched
     }
     Stopwatch stage;
-    verify_result<D>(input, options, result);
+    verify_result<D>(input, options, result, &prepared->topology);
     if (!prepared->assembly.fans.empty()) {
         result.boundary_violations_before =
             count_boundary_violations(prepared->assembly.fans, prepared->initial_map);
