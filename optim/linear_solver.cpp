@@ -240,7 +240,11 @@ struct LinearSolver::Impl {
         switch (t) {
             case LinearSolverType::kCholmodSupernodal:
                 quiet(supernodal.emplace().cholmod());
-                relax_supernodes(supernodal->cholmod());
+                // A single factorization (kAmd) keeps CHOLMOD's default merging: as fast once,
+                // and a smaller factor (LSCM of camel_b.obj Loop-subdivided 4 times, 0.92M
+                // unknowns: 76M stored entries against 123M), which matters where fresh memory
+                // is slow to touch (BENCHMARKS.md, "Planar parameterization at scale").
+                if (ordering != FillOrdering::kAmd) relax_supernodes(supernodal->cholmod());
                 set_ordering(supernodal->cholmod(), ordering);
                 break;
             case LinearSolverType::kCholmodSimplicial:
