@@ -8,9 +8,11 @@
 //
 // A plugin `lib<name>.so` exports one extern "C" function `symbol` returning a pointer to a
 // table of C++ function pointers (same compiler, same headers: the types cross unchanged, and so
-// do exceptions). It is looked for, in this order, in `<folder of the executable>/../lib/`
-// (build/lib beside build/bin, or an installation's lib/), in the executable's folder, and by the
-// loader's default search (LD_LIBRARY_PATH, the system's folders).
+// do exceptions). It is looked for, in this order, in `<folder>/../lib/` and in `<folder>`, where
+// <folder> holds the file this code is linked into (the program, e.g. build/bin beside build/lib
+// or an installation's bin/ beside its lib/; or libsa_geometry.so when the libraries are shared),
+// then by the loader's search (the calling program's run path, which the installed package's
+// config gives programs linking the static libraries, LD_LIBRARY_PATH, the system's folders).
 
 #include <string>
 
