@@ -34,6 +34,10 @@
 //       its structure; returns true when it changed the Hessian. SimplexEnergy's gives
 //       project_hessian_block()'s result; VertexSimplexEnergy's projects in A instead (see there).
 //
+//   Index num_elements() const;
+//       How many elements the energy's per-element data covers: Problem::add_term() rejects a
+//       term whose element count differs.
+//
 // Per-element rest data (areas, inverse rest matrices, ...) lives in the energy object and is
 // indexed by the element number passed to every call. Calls are made concurrently from several
 // threads: the member functions must be const and free of shared mutable state.
@@ -49,8 +53,7 @@ namespace sa {
 template <class E>
 concept ElementEnergy = requires(const E& e, Index i, const Vec<E::arity>& x, Vec<E::arity>& g,
                                  Mat<E::arity>& h) {
-    requires E::arity >
-    0;
+    requires(E::arity > 0);
     { e.value(i, x) } -> std::convertible_to<double>;
     { e.value_gradient_hessian(i, x, g, h) } -> std::convertible_to<double>;
 };
@@ -63,6 +66,11 @@ concept HasMaxStep = requires(const E& e, Index i, const Vec<E::arity>& x) {
 template <class E>
 concept HasValueGradient = requires(const E& e, Index i, const Vec<E::arity>& x, Vec<E::arity>& g) {
     { e.value_gradient(i, x, g) } -> std::convertible_to<double>;
+};
+
+template <class E>
+concept HasElementCount = requires(const E& e) {
+    { e.num_elements() } -> std::convertible_to<std::size_t>;
 };
 
 template <class E>
