@@ -23,9 +23,8 @@
 //       the term's weight. value_gradient(...) below, when present, spares the Hessian later.
 //   static constexpr bool is_convex = true;
 //       The Hessian is positive semidefinite wherever the energy is finite (a sum of squares of
-//       linear functions, say): it is never projected. Projecting the 18 x 18 blocks of 3D edge
-//       assembly was a large part of a small solve's setup (a 300-tetrahedron submesh: 35 ms
-//       with the projection, 27 ms without).
+//       linear functions, say): it is never projected (projecting the 18 x 18 blocks of 3D edge
+//       assembly was a large part of a small solve's setup: BENCHMARKS.md).
 //   double value_gradient(Index element, const Vec<N>& x, Vec<N>& gradient) const;
 //   bool project_hessian(Index element, const Vec<N>& x, Mat<N>& hessian, ProjectionMode mode,
 //                        double epsilon) const;

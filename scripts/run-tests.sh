@@ -9,7 +9,8 @@ ctest --test-dir build --output-on-failure --parallel "$(nproc)" --timeout 900
 
 # ---- The installed package: a user's project built against `cmake --install` ------------------
 # Installs the build into a temporary prefix, then configures, builds and runs tests/consumer/
-# against it, outside the main build tree.
+# against it, outside the main build tree, and checks that no installed library or consumer
+# program defines libgomp's symbols (only the sa command may change its own process).
 check_installed_package() {
     local work prefix start milliseconds
     work=$(mktemp -d)
@@ -22,6 +23,7 @@ check_installed_package() {
     echo "installed package: the consumer configured in ${milliseconds} ms"
     cmake --build "$work/consumer" --parallel "$(nproc)"
     ctest --test-dir "$work/consumer" --output-on-failure
+    bash scripts/check-no-gomp.sh "$prefix/lib" "$work/consumer"
     rm -rf "$work"
 }
 check_installed_package
@@ -48,6 +50,7 @@ check_optim_alone() {
         -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
     cmake --build "$work/consumer" --parallel "$(nproc)"
     ctest --test-dir "$work/consumer" --output-on-failure
+    bash scripts/check-no-gomp.sh "$work/prefix/lib"
     echo "optimizer alone: configured, built and used with Eigen, TBB and CHOLMOD only"
     rm -rf "$work"
 }
