@@ -85,6 +85,7 @@ foreach(layer IN LISTS sa_layers)
             PATTERN "*_plugin.h" EXCLUDE
             PATTERN "openmesh_traits.h" EXCLUDE
             PATTERN "vtk_capture.h" EXCLUDE
+            PATTERN "vtk_scene.h" EXCLUDE
             PATTERN "x_display.h" EXCLUDE)
 endforeach()
 
