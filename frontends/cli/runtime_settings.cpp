@@ -4,8 +4,6 @@
 
 #include <cstdlib>
 
-#include "frontends/cli/populated_heap.h"
-
 // jemalloc, the allocator the command links, reads `malloc_conf` when it starts, before main
 // (MALLOC_CONF in the environment can still override it).
 //
@@ -15,11 +13,11 @@
 // page faults: tlc/stgc-3d took 3,600 faults and 0.117 s with glibc's malloc, 1,700 and 0.078 s
 // with these settings; tlc/cube 0.051 -> 0.042 s (perf stat -r 8, BENCHMARKS.md).
 //
-// narenas:1 and oversize_threshold:0: every thread and every size allocates from arena 0, the
-// one whose growth populated_heap.h maps in one call (each further arena would also map its own
-// metadata: eight arenas took `sa --help` from 14 to 29 MB; large allocations would have had an
-// arena of their own). The hot loops do not allocate; botijo's default run took the same time
-// with one arena as with jemalloc's eight.
+// narenas:1 and oversize_threshold:0: every thread and every size allocates from arena 0 (each
+// further arena would also map its own metadata: eight arenas took `sa --help` from 14 to 29 MB).
+// The hot loops do not allocate; botijo's default run took the same time with one arena as with
+// jemalloc's eight. (A hook that mapped each growth of that arena populated was measured and
+// dropped: BENCHMARKS.md, "What the sa command does to its own process".)
 extern "C" {
 // NOLINTNEXTLINE: the name and type are jemalloc's interface.
 const char* malloc_conf = "thp:always,metadata_thp:always,narenas:1,oversize_threshold:0";
@@ -28,7 +26,6 @@ const char* malloc_conf = "thp:always,metadata_thp:always,narenas:1,oversize_thr
 namespace sa::cli {
 
 void apply_runtime_settings() {
-    populate_heap_growth();
     if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
     // Looked up rather than called: with SA_STATIC_COMMAND off, the BLAS behind CHOLMOD is the
     // one Debian's alternatives choose, which need not be OpenBLAS.

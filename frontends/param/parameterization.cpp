@@ -87,7 +87,7 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
     OptimalBoundOptions rounds;
     rounds.rounds = std::max(1, options.optimal_bound_rounds);
     rounds.tolerance = options.optimal_bound_tolerance;
-    OptimalBound solved = optimal_bound(problem, solver, rounds, observer);
+    OptimalBound solved = optimal_bound(problem, with_time_left(solver, budget), rounds, observer);
     result.initial_quality = solved.initial_quality;
     result.rounds = std::move(solved.rounds);
     const bool have_result = solved.verified;

@@ -90,6 +90,9 @@ struct Verification {
     Index simplices = 0;
     Index inverted = 0;
     Index degenerate = 0;
+    /// Interior vertices (triangles) or edges (tetrahedra) the map wraps around more than once,
+    /// every simplex positive (geometry/local_injectivity.h); counted when none is inverted.
+    Index branched = 0;
     Index handles = 0;
     double handle_error = 0.0;      ///< largest |x_h - target_h|, in the map's units
     double handle_tolerance = 0.0;  ///< handle_tolerance times the initial map's diagonal
@@ -101,8 +104,8 @@ struct Verification {
     double constraint_error = 0.0;      ///< largest |n . (x_b - x_a) - value|, n a unit vector
     double constraint_tolerance = 0.0;  ///< as handle_tolerance
     bool passed() const {
-        return inverted == 0 && degenerate == 0 && handle_error <= handle_tolerance &&
-               constraint_error <= constraint_tolerance;
+        return inverted == 0 && degenerate == 0 && branched == 0 &&
+               handle_error <= handle_tolerance && constraint_error <= constraint_tolerance;
     }
     bool within_bound() const {
         if (!(max_distortion <= bound)) return false;
