@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "frontends/cli/cli_support.h"
 #include "frontends/output/iteration_recorder.h"
@@ -61,8 +62,9 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
         ->capture_default_str();
     map->add_option(
         "--initialization", a.initialization,
-        "initial linear parts: similarity, rotation, identity or random (default: similarity "
-        "for conformal, rotation otherwise)");
+        "initial linear parts: similarity, rotation, identity, random or bounded:K (the "
+        "closest with sigma_max/sigma_min <= K; default: similarity for conformal, rotation "
+        "otherwise)");
     map->add_option("--seed", a.seed, "seed of --initialization random")->capture_default_str();
     map->add_option("--max-iterations", a.max_iterations, "Newton iterations at most")
         ->capture_default_str();
@@ -203,7 +205,17 @@ int run_map_command(const MapArguments& a) {
     std::cout << "sa map: " << problem.mesh.num_simplices()
               << (d == 2 ? " triangles" : " tetrahedra") << ", " << nv << " vertices, "
               << problem.handles.size() << " handles (" << a.rest << ")\n";
-    const SimplexAssemblyResult result = run_simplex_assembly(problem, options, observer);
+    std::optional<SimplexAssemblyResult> solved;
+    try {
+        solved = run_simplex_assembly(problem, options, observer);
+    } catch (const InfeasibleProblemError& e) {
+        // Nothing was optimized and no map is written: the handles alone rule out a solution.
+        if (!a.report.empty()) write_json(a.report, infeasible_report(problem, e));
+        std::cout << "  INFEASIBLE: " << e.what() << "\n"
+                  << (a.report.empty() ? "" : "  wrote " + a.report + "\n");
+        return 1;
+    }
+    const SimplexAssemblyResult& result = *solved;
 
     write_map_result(a.out, problem, result);
     if (!a.report.empty()) write_json(a.report, map_report(problem, options, result));

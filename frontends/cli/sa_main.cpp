@@ -4,7 +4,8 @@
 //   sa param ...  a planar parameterization of a disk-topology surface
 //   sa seamless   a seamless parameterization from a frame field (integrable by Simplex Assembly)
 //   sa subdivide  Loop subdivision (to build large test meshes)
-// Exit status: 0 verified success, 1 a result that did not pass verification, 2 bad input.
+// Exit status: 0 verified success, 1 a result that did not pass verification or a problem whose
+// handles rule out any solution (geometry/handle_feasibility.h), 2 bad input.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
@@ -13,6 +14,7 @@
 #include "frontends/cli/param_command.h"
 #include "frontends/cli/runtime_settings.h"
 #include "frontends/cli/seamless_command.h"
+#include "geometry/handle_feasibility.h"
 #include "optim/errors.h"
 
 int main(int argc, char** argv) {
@@ -42,6 +44,10 @@ int main(int argc, char** argv) {
         if (param->parsed()) return sa::cli::run_param_command(param_arguments);
         if (seamless->parsed()) return sa::cli::run_seamless_command(seamless_arguments);
         if (subdivide->parsed()) return sa::cli::run_subdivide_command(subdivide_arguments);
+    } catch (const sa::InfeasibleProblemError& e) {
+        // A problem with no solution as posed: diagnosed, nothing optimized (exit 1, not 2).
+        std::cerr << "sa: " << e.what() << '\n';
+        return 1;
     } catch (const sa::Error& e) {
         std::cerr << "sa: error: " << e.what() << '\n';
         return 2;

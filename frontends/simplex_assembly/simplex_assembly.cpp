@@ -205,7 +205,7 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
     Stopwatch stage;
     verify_result<D>(input, options, result);
     // The last resort (untangle_fallback.h): no valid map, but the handles are where they belong.
-    if (!result.success &&
+    if (!result.success && options.untangle_fallback &&
         result.verification.handle_error <= result.verification.handle_tolerance &&
         untangle_fallback<D>(*prepared, options, budget, observer, result)) {
         for (Index v = 0; v < input.mesh.num_vertices(); ++v) {
