@@ -4,25 +4,27 @@
 //     A_i = [x_1 - x_0 | ... | x_D - x_0] R_i^-1,      R_i = the rest edge matrix,
 // and assembly asks the copies of each vertex to coincide.
 //
-//   VertexSimplexEnergy          the per-simplex energy of SimplexEnergy, composed with the
-//                                linear map copies -> vec(A_i)
+//   VertexSimplexEnergy          the per-simplex energy of SimplexEnergy (or another element
+//                                energy of vec(A_i), AEnergy), composed with the linear map
+//                                copies -> vec(A_i)
 //   VertexCopyAgreementEnergy    |x_a - x_b|^2 between two copies of one vertex (quadratic)
 //   VertexCopyTargetEnergy       |x - v*|^2 for a copy of a handle (quadratic)
 
 #include <vector>
 
 #include "energies/simplex_energy.h"
+#include "optim/element_energy.h"
 
 namespace sa {
 
-template <int D>
+template <int D, class AEnergy = SimplexEnergy<D>>
 class VertexSimplexEnergy {
   public:
     static constexpr int arity = D * (D + 1);
     static constexpr int kA = D * D;
 
     /// `rest_edge_inverses[i]` = R_i^-1 for each simplex.
-    VertexSimplexEnergy(SimplexEnergy<D> energy, std::vector<Mat<D>> rest_edge_inverses)
+    VertexSimplexEnergy(AEnergy energy, std::vector<Mat<D>> rest_edge_inverses)
         : energy_(std::move(energy)), rest_inverse_(std::move(rest_edge_inverses)) {}
 
     double value(Index i, const Vec<arity>& x) const { return energy_.value(i, map(i) * x); }
@@ -53,7 +55,8 @@ class VertexSimplexEnergy {
         h = L.transpose() * ha * L;
         return true;
     }
-    double max_step(Index i, const Vec<arity>& x, const Vec<arity>& dx) const {
+    double max_step(Index i, const Vec<arity>& x,
+                    const Vec<arity>& dx) const requires HasMaxStep<AEnergy> {
         const Eigen::Matrix<double, kA, arity> L = map(i);
         return energy_.max_step(i, L * x, L * dx);
     }
@@ -72,7 +75,7 @@ class VertexSimplexEnergy {
     }
 
   private:
-    SimplexEnergy<D> energy_;
+    AEnergy energy_;
     std::vector<Mat<D>> rest_inverse_;
 };
 

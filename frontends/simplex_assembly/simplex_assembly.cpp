@@ -6,6 +6,7 @@
 
 #include "frontends/simplex_assembly/prepared_problem.h"
 #include "frontends/simplex_assembly/submesh_assembly.h"
+#include "frontends/simplex_assembly/untangle_fallback.h"
 #include "frontends/simplex_assembly/vertex_stage.h"
 #include "geometry/translation_gluing.h"
 #include "optim/errors.h"
@@ -208,6 +209,16 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
     }
     Stopwatch stage;
     verify_result<D>(input, options, result, &prepared->topology);
+    // The last resort (untangle_fallback.h): no valid map, but the handles are where they belong.
+    if (!result.success && options.untangle_fallback &&
+        result.verification.handle_error <= result.verification.handle_tolerance &&
+        untangle_fallback<D>(*prepared, options, budget, observer, result)) {
+        for (Index v = 0; v < input.mesh.num_vertices(); ++v) {
+            if (!prepared->topology.used_vertex[v])
+                result.positions.row(v) = prepared->initial_map.row(v);
+        }
+        verify_result<D>(input, options, result, &prepared->topology);
+    }
     if (!prepared->assembly.fans.empty()) {
         result.boundary_violations_before =
             count_boundary_violations(prepared->assembly.fans, prepared->initial_map);
@@ -238,6 +249,7 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
             message << "; vertex stage " << result.vertex_stage_note;
         }
     }
+    if (!result.fallback.empty()) message << ". Then " << result.fallback;
     message << ".";
     result.message = message.str();
     result.times.verification += stage.lap();

@@ -76,6 +76,23 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
         result.note = "skipped: the recovered mesh has an inverted simplex or one over the bound";
         return result;
     }
+    // A simplex whose e^{s d} is beyond the barrier's exponent cap (barrier.h; e^500) makes every
+    // other simplex's energy vanish below the sum's rounding: Newton cannot lower the distortion
+    // elsewhere, and on tlc/armadillo-598, where the fixed boundary forces such simplices, its
+    // factorizations failed at every tau. The start is kept.
+    Index beyond_cap = 0;
+    for (Index s : moving) {
+        Eigen::Matrix<double, D, D + 1> corners;
+        for (int k = 0; k <= D; ++k) corners.col(k) = start.row(mesh.simplices(s, k)).transpose();
+        const Mat<D> A = linear_part<D>(frames, s, corners);
+        if (energy.options().barrier.s * energy.barrier_distortion(A) > kBarrierExponentCap)
+            ++beyond_cap;
+    }
+    if (beyond_cap > 0) {
+        result.note = "skipped: " + std::to_string(beyond_cap) +
+                      " simplices are so distorted that the barrier cannot rank the others";
+        return result;
+    }
     NewtonOptions newton;
     newton.max_iterations = options.max_iterations;
     newton.max_time_seconds = options.max_time_seconds;
