@@ -2,6 +2,7 @@
 
 #include <jemalloc/jemalloc.h>
 
+#include "frontends/cli/out_of_memory.h"
 #include "optim/prefault.h"
 
 namespace sa::cli {
@@ -15,6 +16,9 @@ void* allocate_populated(extent_hooks_t* /*hooks*/, void* address, std::size_t s
     void* memory =
         jemalloc_hooks->alloc(jemalloc_hooks, address, size, alignment, zero, commit, arena);
     if (memory != nullptr && *commit && size <= kLargestPopulatedGrowth) prefault(memory, size);
+    // After a larger growth of its reserve fails, jemalloc asks for the request's own extent: the
+    // last failure is the size an out-of-memory message reports.
+    if (memory == nullptr) note_failed_allocation(size);
     return memory;
 }
 

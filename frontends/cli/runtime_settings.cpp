@@ -3,7 +3,9 @@
 #include <dlfcn.h>
 
 #include <cstdlib>
+#include <new>
 
+#include "frontends/cli/out_of_memory.h"
 #include "frontends/cli/populated_heap.h"
 
 // jemalloc, the allocator the command links, reads `malloc_conf` when it starts, before main
@@ -26,10 +28,50 @@ const char* malloc_conf = "thp:always,metadata_thp:always,narenas:1,oversize_thr
 }
 
 namespace sa::cli {
+namespace {
+
+bool blas_threads_set_here = false;
+
+// Runs before OpenBLAS's own initialization when OpenBLAS is linked statically (a constructor of
+// priority 101 comes before those without one), which then starts no worker thread. A worker
+// allocates its 128 MB buffer as it starts, and OpenBLAS retries a failed allocation forever:
+// under `ulimit -v` below about 190 MB every command, `sa --version` included, hung at 100% CPU
+// while main waited to join that thread; at 50 MB creating the thread failed and OpenBLAS ended
+// the process. The variable is removed again in main (apply_runtime_settings), so that programs
+// the command starts see the environment they were given.
+__attribute__((constructor(101))) void one_blas_thread() {
+    if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
+    blas_threads_set_here = setenv("OPENBLAS_NUM_THREADS", "1", 0) == 0;
+}
+
+// OpenBLAS's work buffer: BUFFER_SIZE (32 << 22 bytes on x86-64) plus a page, requested with
+// malloc() by its alloc_malloc() on the first BLAS call (seen in gdb: jemalloc maps 160 MB for it).
+constexpr std::size_t kBlasBuffer = (std::size_t(32) << 22) + 4096;
+
+}  // namespace
+
+void reserve_blas_buffer() {
+    if (memory_limit() == 0) return;  // without a limit, malloc of address space does not fail
+    using Allocate = void* (*)(int);
+    using Release = void (*)(void*);
+    auto allocate = reinterpret_cast<Allocate>(dlsym(RTLD_DEFAULT, "blas_memory_alloc"));
+    auto release = reinterpret_cast<Release>(dlsym(RTLD_DEFAULT, "blas_memory_free"));
+    if (allocate == nullptr || release == nullptr) return;  // not OpenBLAS
+    set_activity("reserving OpenBLAS's 128 MB work buffer (for the sparse Cholesky factorization)");
+    // OpenBLAS would retry forever: try first, and fail at once if it cannot be had.
+    void* probe = std::malloc(kBlasBuffer);
+    if (probe == nullptr) {
+        note_failed_allocation(kBlasBuffer);
+        throw std::bad_alloc();
+    }
+    std::free(probe);
+    release(allocate(0));  // kept by OpenBLAS for its later calls
+}
 
 void apply_runtime_settings() {
     populate_heap_growth();
-    if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
+    if (blas_threads_set_here) unsetenv("OPENBLAS_NUM_THREADS");
+    if (blas_threads_set_here || std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
     // Looked up rather than called: with SA_STATIC_COMMAND off, the BLAS behind CHOLMOD is the
     // one Debian's alternatives choose, which need not be OpenBLAS.
     using SetThreads = void (*)(int);
