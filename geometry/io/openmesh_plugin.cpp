@@ -122,10 +122,39 @@ long long declared_faces(const std::string& path, bool stl, bool binary) {
     return faces;
 }
 
+// What a file must start with before OpenMesh reads it (its messages for a file of another kind
+// are vague, and an ASCII STL reader takes any text for an empty mesh): PLY's magic line `ply`;
+// an STL either ASCII (`solid`) or binary (84 + 50 N bytes).
+void check_start(const std::string& path, bool stl, bool binary_stl) {
+    if (binary_stl) return;
+    std::ifstream in(path, std::ios::binary);
+    std::string first;
+    std::getline(in, first);
+    if (!first.empty() && first.back() == '\r') first.pop_back();
+    std::size_t begin = 0;
+    while (begin < first.size() && (first[begin] == ' ' || first[begin] == '\t')) ++begin;
+    bool text = true;
+    for (const char c : first) {
+        const auto u = static_cast<unsigned char>(c);
+        text = text && !((u < 0x20 && c != '\t') || u == 0x7f);
+    }
+    const std::string shown = text ? io::quote(first) : std::string("binary data");
+    if (!stl && first != "ply")
+        throw InputError(path + ":1: not a PLY file: expected 'ply', found " + shown);
+    if (stl && first.compare(begin, 5, "solid") != 0) {
+        std::error_code error;
+        const auto size = std::filesystem::file_size(path, error);
+        throw InputError(path + ": not an STL file: neither ASCII ('solid' on line 1, found " +
+                         shown + ") nor binary (84 + 50 x the triangle count bytes; the file has " +
+                         std::to_string(error ? 0 : size) + ")");
+    }
+}
+
 MeshFile read_with_openmesh(const std::string& path, const char* format) {
     io::check_readable(path);
     const bool stl = std::string(format) == "STL";
     const bool binary = stl && is_binary_stl(path);
+    check_start(path, stl, binary);
     Mesh mesh;
     // With status attributes, OpenMesh marks the faces it had to detach to keep the mesh
     // manifold (it re-adds them on duplicated vertices instead of failing).
