@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/simplicial_mesh.h"
+#include "optim/errors.h"
 #include "optim/logger.h"
 #include "optim/types.h"
 
@@ -30,6 +31,18 @@ Eigen::MatrixXd read_positions(const std::string& path, Index expected_rows, int
 /// .off hold triangles, .node/.ele tetrahedra; .ply and .stl are not written), so that a run never
 /// ends in a write that was bound to fail.
 void check_output_format(const std::string& path, int dimension);
+
+/// `parse(value)`, whose InvalidArgumentError gets the option and value in front: "--energy frob:
+/// unknown distortion 'frob' (...)" (the parsers name the value, not the option it came with).
+template <class Parse>
+auto parse_option(const std::string& option, const std::string& value, Parse&& parse)
+    -> decltype(parse(value)) {
+    try {
+        return parse(value);
+    } catch (const InvalidArgumentError& e) {
+        throw InvalidArgumentError(option + " " + value + ": " + e.what());
+    }
+}
 
 /// Throws InputError `PATH: the mesh has no vertices` (or no simplices), naming the file the mesh
 /// was read from, so that later checks (handles, fields) do not blame another file.

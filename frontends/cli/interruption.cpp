@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <pthread.h>
+#include <atomic>
 #include <cerrno>
 #include <csignal>
 
@@ -13,6 +14,7 @@ namespace {
 constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
 
 int wake_pipe[2] = {-1, -1};
+std::atomic<bool> interrupted{false};  // set before the cleanup waits for the output lock
 
 std::mutex& output_mutex() {
     static std::mutex mutex;
@@ -55,7 +57,10 @@ void* wait_for_signal(void*) {
     for (;;) {
         unsigned char byte = 0;
         const ssize_t n = read(wake_pipe[0], &byte, 1);
-        if (n == 1) clean_up_and_die(byte);
+        if (n == 1) {
+            interrupted.store(true);
+            clean_up_and_die(byte);
+        }
         if (n < 0 && errno == EINTR) continue;
         return nullptr;  // the pipe is gone: nothing to wait for
     }
@@ -96,7 +101,14 @@ void install_interruption_handling() {
 }
 
 std::unique_lock<std::mutex> output_lock() {
-    return std::unique_lock<std::mutex>(output_mutex());
+    std::unique_lock<std::mutex> lock(output_mutex());
+    if (interrupted.load()) {
+        // No output starts once an interruption is seen: the cleanup, waiting for this lock,
+        // removes what was written and ends the process.
+        lock.unlock();
+        for (;;) pause();
+    }
+    return lock;
 }
 
 void set_interruption_cleanup(std::function<void()> function) {

@@ -18,7 +18,8 @@ namespace sa::cli {
 /// Installs the handlers and starts the thread; once per process, before any output is written.
 void install_interruption_handling();
 
-/// Held by whoever writes an output (a file, a frame of --record, the renames at the end).
+/// Held by whoever writes an output (a file, a frame of --record, the renames at the end). Once an
+/// interruption has been seen, it never returns: the process ends while waiting.
 std::unique_lock<std::mutex> output_lock();
 
 /// The cleanup an interruption runs (under the output lock); an empty function clears it. Takes

@@ -148,16 +148,17 @@ std::string format_quality(const MapQuality& q) {
 int run_map_command(const MapArguments& a) {
     // Options and output locations first: a typo should not cost a solve.
     SimplexAssemblyOptions options;
-    options.distortion = parse_distortion(a.distortion);
+    options.distortion = parse_option("--distortion", a.distortion, parse_distortion);
     options.bound = parse_bound(a.bound);
-    if (a.energy != "none") options.mapping_distortion = parse_distortion(a.energy);
+    if (a.energy != "none")
+        options.mapping_distortion = parse_option("--energy", a.energy, parse_distortion);
     options.mu = a.mu;
     options.s = a.s;
     options.lambda_max = a.lambda_max;
     options.vertex_stage = !a.no_vertex_stage;
     options.until_valid = a.until_valid;
-    options.mode = parse_solve_mode(a.mode);
-    options.linear_solver = parse_linear_solver(a.linear_solver);
+    options.mode = parse_option("--mode", a.mode, parse_solve_mode);
+    options.linear_solver = parse_option("--linear-solver", a.linear_solver, parse_linear_solver);
     options.rings = a.rings;
     options.max_rings = a.max_rings;
     options.max_rounds = a.max_rounds;
@@ -165,10 +166,12 @@ int run_map_command(const MapArguments& a) {
         throw InvalidArgumentError("--max-rings " + std::to_string(a.max_rings) +
                                    ": must be >= --rings (" + std::to_string(a.rings) + ")");
     }
-    options.projection = parse_projection(a.projection);
+    options.projection = parse_option("--projection", a.projection, parse_projection);
     options.translation_shift = a.translation_shift;
-    options.variant = parse_variant(a.variant);
-    if (!a.initialization.empty()) options.initialization = parse_initialization(a.initialization);
+    options.variant = parse_option("--variant", a.variant, parse_variant);
+    if (!a.initialization.empty())
+        options.initialization =
+            parse_option("--initialization", a.initialization, parse_initialization);
     options.seed = a.seed;
     options.max_iterations = a.max_iterations;
     options.max_time_seconds = a.max_time;

@@ -90,7 +90,7 @@ int run_param_command(const ParamArguments& a) {
     Stopwatch total;
     ParameterizationOptions options;
     SimplexAssemblyOptions& solver = options.solver;
-    solver.distortion = parse_distortion(a.distortion);
+    solver.distortion = parse_option("--distortion", a.distortion, parse_distortion);
     if (solver.distortion != DistortionType::kConformal &&
         solver.distortion != DistortionType::kIsometric) {
         throw InvalidArgumentError("--distortion " + a.distortion +
@@ -105,7 +105,7 @@ int run_param_command(const ParamArguments& a) {
         throw InvalidArgumentError("--energy " + a.energy + ": expected difference, lscm or none");
     }
     solver.mu = a.mu;
-    solver.mode = parse_solve_mode(a.mode);
+    solver.mode = parse_option("--mode", a.mode, parse_solve_mode);
     solver.num_threads = a.threads;
     solver.max_iterations = a.max_iterations;
     solver.validate();
