@@ -6,7 +6,9 @@
 #include <new>
 
 #include "frontends/cli/out_of_memory.h"
+#ifndef SA_SYSTEM_ALLOCATOR
 #include "frontends/cli/populated_heap.h"
+#endif
 
 // jemalloc, the allocator the command links, reads `malloc_conf` when it starts, before main
 // (MALLOC_CONF in the environment can still override it).
@@ -22,10 +24,12 @@
 // metadata: eight arenas took `sa --help` from 14 to 29 MB; large allocations would have had an
 // arena of their own). The hot loops do not allocate; botijo's default run took the same time
 // with one arena as with jemalloc's eight.
+#ifndef SA_SYSTEM_ALLOCATOR
 extern "C" {
 // NOLINTNEXTLINE: the name and type are jemalloc's interface.
 const char* malloc_conf = "thp:always,metadata_thp:always,narenas:1,oversize_threshold:0";
 }
+#endif
 
 namespace sa::cli {
 namespace {
@@ -69,9 +73,12 @@ void reserve_blas_buffer() {
 }
 
 void apply_runtime_settings() {
+#ifndef SA_SYSTEM_ALLOCATOR
     populate_heap_growth();
+#endif
     if (blas_threads_set_here) unsetenv("OPENBLAS_NUM_THREADS");
-    if (blas_threads_set_here || std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
+    // A shared OpenBLAS started before that constructor ran: one thread, as below, all the same.
+    if (!blas_threads_set_here && std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
     // Looked up rather than called: with SA_STATIC_COMMAND off, the BLAS behind CHOLMOD is the
     // one Debian's alternatives choose, which need not be OpenBLAS.
     using SetThreads = void (*)(int);
