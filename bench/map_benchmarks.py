@@ -5,7 +5,8 @@ and prints a markdown table: elements, inverted before and after, handle error, 
 delta_iso (max / area-weighted mean), iterations, wall time and peak memory of each run.
 
 Cases:
-  tlc/<name>        the plain-text problem (rest, initial map, handles) as published
+  tlc/<name>        the plain-text problem (rest, initial map, handles) as published;
+                    tlc/infeasible-star has no solution and must be diagnosed before optimizing
   deform/<name>     the rest shape with only the handle vertices moved to their positions in
                     <name>_init.node (the handles stay at those targets)
   untwist-twisted   deform/untwist with its whole _init.node as the initial map (the handles of
@@ -33,9 +34,9 @@ ROOT = os.path.dirname(HERE)
 def cases(data, which):
     out = []
     if 'tlc' in which:
-        for name in ['stgc-2d', 'sea-2d', 'param2d', 'cube', 'stgc-3d']:
+        for name in ['stgc-2d', 'sea-2d', 'param2d', 'cube', 'stgc-3d', 'infeasible-star']:
             d = os.path.join(data, 'tlc', name)
-            out.append(dict(name='tlc/' + name, dim=3 if name in ('cube', 'stgc-3d') else 2,
+            out.append(dict(name='tlc/' + name, dim=3 if name in ('cube', 'stgc-3d', 'infeasible-star') else 2,
                             args=['--rest', os.path.join(d, 'input')],
                             check=['--rest', os.path.join(d, 'input')]))
     if 'deform' in which:
@@ -105,6 +106,12 @@ def run_case(a, case, variant, work):
         return row
     rep = json.load(open(report))
     row['elements'] = rep['input']['simplices']
+    if 'infeasible' in rep:  # diagnosed before optimizing (geometry/handle_feasibility.h)
+        f = rep['infeasible']
+        row['status'] = 'diagnosed infeasible (exit %d): %d of %d fixed simplices inverted, %d flat' % (
+            r['code'], f['inverted'], f['fixed_simplices'], f['flat'])
+        print('  ', row['status'], fmt(row['wall']), 's', file=sys.stderr, flush=True)
+        return row
     row['before'] = rep['initial_quality']['inverted']
     row['mode'] = rep.get('mode', 'full')
     stage = rep.get('vertex_stage', {}).get('iterations', 0)

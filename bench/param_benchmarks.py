@@ -8,12 +8,18 @@ With --large, also the million-face case of issue 5: camelhead.off Loop-subdivid
 (`sa subdivide`, 1.45M faces), parameterized from LSCM with E_m = LSCM and K^conf = 1.45
 (delta_con <= 2.5) as in the paper's Figure 11, with the time of each stage.
 
-  python3 bench/param_benchmarks.py [--large] [--only NAME] [--timeout 600] [--write BENCHMARKS.md]
+With --robustness, instead: golf.obj (OptCuts) and generated disks of its class (flat closed
+surfaces with a one-vertex hole and sliver triangles), from LSCM and from Tutte, with and without
+the fallback to a Tutte start (frontends/param/start_fallback.h); --write puts that table between
+<!-- param-robustness:begin --> and <!-- param-robustness:end -->.
+
+  python3 bench/param_benchmarks.py [--large] [--robustness] [--only NAME] [--timeout 600] [--write BENCHMARKS.md]
 
 With --write, the tables replace the section between <!-- param-benchmarks:begin --> and
 <!-- param-benchmarks:end --> of that file. Extra arguments after -- go to every `sa param` run.
 """
 import argparse
+import math
 import json
 import os
 import sys
@@ -96,6 +102,95 @@ def large_case(a, work):
     return text
 
 
+def flat_ball_with_slivers(n, toward, step, pull, path):
+    """The class of OptCuts' golf.obj, as tests/frontends/param_test.cpp builds it: the octahedral
+    sphere of n^2 triangles per face (geometry/mesh_generators.h), the star of the vertex nearest
+    `toward` removed (a one-vertex hole), bent, squashed to 3% of its height, and every `step`-th
+    triangle made a sliver by moving a vertex `pull` of the way to its opposite edge's middle."""
+    ids, points, faces = {}, [], []
+
+    def vertex(c):
+        if c not in ids:
+            ids[c] = len(points)
+            norm = math.sqrt(sum(x * x for x in c))
+            points.append([x / norm for x in c])
+        return ids[c]
+    for octant in range(8):
+        sx, sy, sz = (-1 if octant & 1 else 1), (-1 if octant & 2 else 1), (-1 if octant & 4 else 1)
+        flip = sx * sy * sz < 0
+
+        def at(a, b):
+            return vertex((sx * a, sy * b, sz * (n - a - b)))
+
+        def add(p, q, w):
+            faces.append([p, w, q] if flip else [p, q, w])
+        for a in range(n):
+            for b in range(n - a):
+                add(at(a, b), at(a + 1, b), at(a, b + 1))
+                if a + b + 1 < n:
+                    add(at(a + 1, b), at(a + 1, b + 1), at(a, b + 1))
+    norm = math.sqrt(sum(x * x for x in toward))
+    toward = [x / norm for x in toward]
+    hole = max(range(len(points)), key=lambda v: sum(points[v][k] * toward[k] for k in range(3)))
+    faces = [f for f in faces if hole not in f]
+    last = len(points) - 1
+    points[hole] = points[last]
+    points.pop()
+    faces = [[hole if v == last else v for v in f] for f in faces]
+    for p in points:
+        p[1] = 1.3 * p[1] + 0.5 * math.sin(2.0 * p[0])
+        p[2] *= 0.03
+    moved = [False] * len(points)
+    for s in range(0, len(faces), step):
+        a, b, c = faces[s]
+        if moved[a] or moved[b] or moved[c]:
+            continue
+        moved[a] = True
+        middle = [0.5 * (points[b][k] + points[c][k]) for k in range(3)]
+        points[a] = [(1 - pull) * points[a][k] + pull * middle[k] for k in range(3)]
+    with open(path, 'w') as out:
+        for p in points:
+            out.write('v %.17g %.17g %.17g\n' % tuple(p))
+        for f in faces:
+            out.write('f %d %d %d\n' % (f[0] + 1, f[1] + 1, f[2] + 1))
+    return path
+
+
+def robustness_case(a, work):
+    """golf.obj and generated disks of its class, with and without the Tutte fallback."""
+    golf = os.path.join(a.data, 'param', 'golf.obj')
+    meshes = [('golf.obj', golf)]
+    for n, toward, step, pull in [(8, (-0.3, 0.9, 0.2), 5, 0.95), (10, (-0.3, 0.9, 0.2), 7, 0.95),
+                                  (10, (-0.3, 0.9, 0.2), 4, 0.9), (20, (1, 0.1, 0.2), 8, 0.9)]:
+        name = 'flat ball n=%d, slivers every %d' % (n, step)
+        meshes.append((name, flat_ball_with_slivers(n, toward, step, pull, os.path.join(
+            work, 'flat-ball-%d-%d.obj' % (n, step)))))
+    rows = []
+    for name, mesh in meshes:
+        if a.only and a.only not in name:
+            continue
+        for init in ('lscm', 'tutte'):
+            for fallback in (False, True):
+                args = ['--init', init] + ([] if fallback else ['--no-fallback'])
+                label = '%s, --init %s%s' % (name, init, '' if fallback else ', --no-fallback')
+                row, rep = run_param(a, mesh, args, work, label.replace(' ', '_').replace(',', ''))
+                row['name'] = label
+                if rep is not None:
+                    f = rep['parameterization']['fallback']
+                    row['fallback'] = f.get('start') or ('none verified' if f['used'] else '-')
+                rows.append(row)
+    lines = ['| case | faces | foldovers initial | foldovers after | δ_con max | δ_con mean | '
+             'fallback start | time (s) | check_map.py |', '|---|---|---|---|---|---|---|---|---|']
+    for r in rows:
+        chk = r.get('check', {})
+        con = chk.get('conformal', [None, None])
+        lines.append('| %s | %s | %s | %s | %s | %s | %s | %s | %s |' % (
+            r['name'], fmt(r.get('faces')), fmt(r.get('before')), fmt(chk.get('inverted')),
+            fmt(con[0], 4), fmt(con[1], 4), r.get('fallback', '-'), fmt(r.get('wall')), r['status']))
+    return ('`sa param --mesh M --init I [--no-fallback]` (default options otherwise; the generated '
+            'disks as tests/frontends/param_test.cpp builds them):\n\n' + '\n'.join(lines) + '\n')
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     ap.add_argument('--sa', default=os.path.join(ROOT, 'build', 'bin', 'sa'))
@@ -103,12 +198,22 @@ def main():
     ap.add_argument('--checker', default=os.path.join(ROOT, '..', 'shared', 'tools', 'check_map.py'))
     ap.add_argument('--only', help='run only the meshes whose name contains this text')
     ap.add_argument('--large', action='store_true', help='add the 1.45M-face case')
+    ap.add_argument('--robustness', action='store_true',
+                    help='only golf.obj and generated disks of its class, with and without the '
+                         'Tutte fallback')
     ap.add_argument('--timeout', type=float, default=600.0, help='seconds per run')
     ap.add_argument('--write', help='markdown file whose param-benchmarks section gets the tables')
     ap.add_argument('extra', nargs='*', help='arguments for every sa param run (after --)')
     a = ap.parse_args()
 
     work = tempfile.mkdtemp(prefix='sa-param-bench-')
+    if a.robustness:
+        output = robustness_case(a, work)
+        print(output)
+        if a.write:
+            write_section(a.write, 'param-robustness',
+                          'python3 bench/param_benchmarks.py ' + ' '.join(sys.argv[1:]), output)
+        return 0
     folder = os.path.join(a.data, 'param')
     rows = []
     for name in sorted(os.listdir(folder)):

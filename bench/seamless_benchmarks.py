@@ -134,6 +134,12 @@ def run_case(a, work, name, mesh, args):
         row['status'] = 'error: ' + (r['err'].strip().splitlines() or ['exit %d' % r['code']])[-1]
         return row
     rep = json.load(open(report))
+    if 'infeasible' in rep:  # a cone configuration no seamless map has (cone_obstruction.h)
+        row.update(faces=rep['faces'], singular=len(rep['singularities_before']),
+                   source=rep['field_source'],
+                   status='diagnosed infeasible (exit %d): a +1/4, -1/4 pair alone on a torus' % r['code'])
+        print('  ', row['status'], fmt(row['wall']), 's', file=sys.stderr, flush=True)
+        return row
     row.update(faces=rep['faces'], singular=len(rep['singularities_before']),
                curl_before=rep['curl_before']['max'], curl_after=rep['curl_after']['max'],
                plain=rep['plain_poisson']['quality']['inverted'], source=rep['field_source'],
@@ -194,6 +200,8 @@ def cases(data):
         ('lilium_b/_bc', os.path.join(ff, 'lilium.obj'),
          ['--constraints', os.path.join(ff, 'lilium_b.dmat'), os.path.join(ff, 'lilium_bc.dmat')]),
         ('bumpy-cube.dmat', os.path.join(ff, 'bumpy-cube.obj'), ['--field', os.path.join(ff, 'bumpy-cube.dmat')]),
+        ('torus_twosings.rawfield', os.path.join(ff, 'torus.obj'),
+         ['--field', os.path.join(ff, 'torus_twosings.rawfield')]),
     ]
     out += [('%s.dmat' % n, os.path.join(ff, 'snail.obj'), ['--field', os.path.join(ff, n + '.dmat')])
             for n in ('snail1', 'snail2', 'snail3', 'snail4')]

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/option_checks.h"
@@ -70,8 +71,9 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
         ->capture_default_str();
     map->add_option(
         "--initialization", a.initialization,
-        "initial linear parts: similarity, rotation, identity or random (default: similarity "
-        "for conformal, rotation otherwise)");
+        "initial linear parts: similarity, rotation, identity, random or bounded:K (the "
+        "closest with sigma_max/sigma_min <= K; default: similarity for conformal, rotation "
+        "otherwise)");
     map->add_option("--seed", a.seed, "seed of --initialization random")
         ->check(integer_at_least(0))
         ->capture_default_str();
@@ -248,7 +250,27 @@ int run_map_command(const MapArguments& a) {
               << problem.handles.size() << " handles (" << a.rest << ")\n";
     set_activity("solving (Simplex Assembly on " + std::to_string(problem.mesh.num_simplices()) +
                  (d == 2 ? " triangles)" : " tetrahedra)"));
-    const SimplexAssemblyResult result = run_simplex_assembly(problem, options, observer);
+    std::optional<SimplexAssemblyResult> solved;
+    try {
+        solved = run_simplex_assembly(problem, options, observer);
+    } catch (const InfeasibleProblemError& e) {
+        // Nothing was optimized and no map is written: the handles alone rule out a solution.
+        // The report says why; a --record folder is closed with no frame.
+        set_activity("writing the report");
+        if (!a.report.empty()) {
+            const nlohmann::json report = infeasible_report(problem, e);
+            plan.write(a.report, [&](const std::string& path) { write_json(path, report); });
+        }
+        if (recorder) {
+            const auto lock = output_lock();
+            recorder->finish();
+        }
+        plan.commit();
+        std::cout << "  INFEASIBLE: " << one_line(e.what()) << "\n"
+                  << (a.report.empty() ? "" : "  wrote " + a.report + "\n");
+        return kExitNotVerified;
+    }
+    const SimplexAssemblyResult& result = *solved;
 
     set_activity("writing the outputs");
     plan.write(a.out, [&](const std::string& path) { write_map_result(path, problem, result); });

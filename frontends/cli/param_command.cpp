@@ -66,6 +66,9 @@ CLI::App* add_param_command(CLI::App& app, ParamArguments& a) {
     param->add_flag(
         "--free-boundary-injective", a.free_boundary_injective,
         "keep every boundary angle sum below 2 pi (the barrier E_theta of 5.1; full mode)");
+    param->add_flag("--no-fallback", a.no_fallback,
+                    "keep the requested start's result even when it does not verify (no restart "
+                    "from a Tutte map)");
     param->add_option("--mode", a.mode, "auto, full or submesh")->capture_default_str();
     param->add_option("--threads", a.threads, "worker threads, 0 = all cores")
         ->check(integer_at_least(0))
@@ -112,6 +115,7 @@ int run_param_command(const ParamArguments& a) {
     if (a.optimal_bound)
         options.optimal_bound_rounds = a.optimal_bound_rounds > 0 ? a.optimal_bound_rounds : 10;
     options.free_boundary_injective = a.free_boundary_injective;
+    options.fallback = !a.no_fallback;
     const std::string out_ext = extension(a.out);
     if (out_ext != ".obj" && out_ext != ".vtu" && out_ext != ".vtk") {
         throw InvalidArgumentError(a.out +
@@ -229,7 +233,36 @@ int run_param_command(const ParamArguments& a) {
                               {"iterations", b.iterations},
                               {"time", b.time}});
         }
+        nlohmann::json fallback = {{"used", r.fallback.used}};
+        if (r.fallback.used) {
+            nlohmann::json starts = nlohmann::json::array();
+            for (const TriedStart& t : r.fallback.starts) {
+                starts.push_back({{"start", t.name},
+                                  {"valid", t.valid},
+                                  {"verified", t.verified},
+                                  {"max_distortion", std::isfinite(t.max_distortion)
+                                                         ? nlohmann::json(t.max_distortion)
+                                                         : nlohmann::json(nullptr)},
+                                  {"outcome", t.outcome}});
+            }
+            nlohmann::json descent = nlohmann::json::array();
+            for (const DescentRound& d : r.fallback.rounds) {
+                descent.push_back({{"s", d.s},
+                                   {"bound", std::isfinite(d.bound) ? nlohmann::json(d.bound)
+                                                                    : nlohmann::json(nullptr)},
+                                   {"max_distortion_before", d.max_distortion_before},
+                                   {"max_distortion_after", d.max_distortion_after},
+                                   {"iterations", d.iterations},
+                                   {"termination", d.termination}});
+            }
+            fallback["reason"] = r.fallback.reason;
+            fallback["starts"] = starts;
+            fallback["start"] = r.fallback.start;
+            fallback["descent_rounds"] = descent;
+            fallback["time"] = r.fallback.time;
+        }
         report["parameterization"] = {
+            {"fallback", fallback},
             {"initial_map", a.init},
             {"initial_quality", quality_json(r.initial_quality)},
             {"bound_rounds", rounds},
@@ -261,6 +294,11 @@ int run_param_command(const ParamArguments& a) {
     if (options.optimal_bound_rounds > 0) {
         std::cout << "  optimal bound: " << r.rounds.size() << " rounds, K reached "
                   << r.reached_bound << "\n";
+    }
+    if (r.fallback.used) {
+        std::cout << "  fallback: " << r.fallback.reason << "\n";
+        for (const TriedStart& t : r.fallback.starts)
+            std::cout << "    " << t.name << ": " << t.outcome << "\n";
     }
     std::snprintf(line, sizeof line,
                   "  time %.2f s (read %.2f, initial map %.2f, Simplex Assembly %.2f, output "

@@ -13,6 +13,7 @@ struct ParamArguments {
     double mu = 1000.0;
     int optimal_bound_rounds = 0, threads = 0, max_iterations = 200;
     bool optimal_bound = false, free_boundary_injective = false, force = false, quiet = false;
+    bool no_fallback = false;
 };
 
 CLI::App* add_param_command(CLI::App& app, ParamArguments& arguments);

@@ -48,29 +48,7 @@ __attribute__((constructor(101))) void one_blas_thread() {
     blas_threads_set_here = setenv("OPENBLAS_NUM_THREADS", "1", 0) == 0;
 }
 
-// OpenBLAS's work buffer: BUFFER_SIZE (32 << 22 bytes on x86-64) plus a page, requested with
-// malloc() by its alloc_malloc() on the first BLAS call (seen in gdb: jemalloc maps 160 MB for it).
-constexpr std::size_t kBlasBuffer = (std::size_t(32) << 22) + 4096;
-
 }  // namespace
-
-void reserve_blas_buffer() {
-    if (memory_limit() == 0) return;  // without a limit, malloc of address space does not fail
-    using Allocate = void* (*)(int);
-    using Release = void (*)(void*);
-    auto allocate = reinterpret_cast<Allocate>(dlsym(RTLD_DEFAULT, "blas_memory_alloc"));
-    auto release = reinterpret_cast<Release>(dlsym(RTLD_DEFAULT, "blas_memory_free"));
-    if (allocate == nullptr || release == nullptr) return;  // not OpenBLAS
-    set_activity("reserving OpenBLAS's 128 MB work buffer (for the sparse Cholesky factorization)");
-    // OpenBLAS would retry forever: try first, and fail at once if it cannot be had.
-    void* probe = std::malloc(kBlasBuffer);
-    if (probe == nullptr) {
-        note_failed_allocation(kBlasBuffer);
-        throw std::bad_alloc();
-    }
-    std::free(probe);
-    release(allocate(0));  // kept by OpenBLAS for its later calls
-}
 
 void apply_runtime_settings() {
 #ifndef SA_SYSTEM_ALLOCATOR

@@ -5,8 +5,9 @@
 //   sa seamless   a seamless parameterization from a frame field (integrable by Simplex Assembly)
 //   sa subdivide  Loop subdivision (to build large test meshes)
 // Exit status (cli_support.h, README.md): 0 verified success, 1 a result that did not pass
-// verification, 2 bad input, 3 internal error, 4 out of memory; killed by SIGINT, SIGTERM, SIGHUP
-// or SIGPIPE after removing the run's outputs (interruption.h). Every error is one line on stderr.
+// verification or a problem whose handles rule out any solution (geometry/handle_feasibility.h),
+// 2 bad input, 3 internal error, 4 out of memory; killed by SIGINT, SIGTERM, SIGHUP or SIGPIPE
+// after removing the run's outputs (interruption.h). Every error is one line on stderr.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cerrno>
@@ -24,6 +25,7 @@
 #include "frontends/cli/param_command.h"
 #include "frontends/cli/runtime_settings.h"
 #include "frontends/cli/seamless_command.h"
+#include "geometry/handle_feasibility.h"
 #include "optim/errors.h"
 
 namespace {
@@ -104,6 +106,10 @@ int run(int argc, char** argv) {
         if (subdivide->parsed()) return sa::cli::run_subdivide_command(subdivide_arguments);
     } catch (const std::bad_alloc&) {
         return report("error", sa::cli::out_of_memory_message(), sa::cli::kExitOutOfMemory);
+    } catch (const sa::InfeasibleProblemError& e) {
+        // A problem with no solution as posed: diagnosed, nothing optimized (exit 1, not 2).
+        std::cerr << "sa: " << sa::cli::one_line(e.what()) << '\n' << std::flush;
+        return sa::cli::kExitNotVerified;
     } catch (const sa::Error& e) {
         return report("error", e.what(), sa::cli::kExitBadInput);
     } catch (const std::system_error& e) {

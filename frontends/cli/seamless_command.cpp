@@ -84,7 +84,8 @@ CLI::App* add_seamless_command(CLI::App& app, SeamlessArguments& a) {
         ->required();
     cmd->add_option("--field", a.field,
                     "per-face frame or cross field: libigl .dmat (ASCII or binary) or "
-                    ".crossfield; faces it leaves free are filled by the smoothest cross field. "
+                    ".crossfield, or Directional .rawfield (N = 4); faces it leaves free are "
+                    "filled by the smoothest cross field. "
                     "Without it (and without --constraints), the smoothest cross field");
     cmd->add_option("--constraints", a.constraints,
                     "libigl's pair B.dmat BC.dmat: constrained faces and their vectors; the "
@@ -180,6 +181,26 @@ int run_seamless_command(const SeamlessArguments& a) {
     const SeamlessResult r =
         seamless_parameterization(mesh, field, options, stderr_logger(a.quiet));
     stage.lap();
+    if (!r.infeasible.empty()) {
+        // Diagnosed before optimizing: no map is written.
+        if (!a.report.empty()) {
+            write_json(
+                a.report,
+                {{"command", "seamless"},
+                 {"mesh", a.mesh},
+                 {"faces", mesh.num_simplices()},
+                 {"vertices", mesh.num_vertices()},
+                 {"field", a.field.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.field)},
+                 {"field_source", r.field_source},
+                 {"singularities_before", singularities_json(r.singularities_before)},
+                 {"infeasible", {{"description", r.infeasible}}},
+                 {"success", false},
+                 {"message", r.message},
+                 {"times", {{"read", read_time}, {"total", total.seconds()}}}});
+        }
+        std::cout << "  " << r.message << (a.report.empty() ? "" : "\n  wrote " + a.report) << "\n";
+        return 1;
+    }
 
     set_activity("writing the outputs");
     const CutMesh& cut = r.result.map.cut;
@@ -215,7 +236,27 @@ int run_seamless_command(const SeamlessArguments& a) {
                                   {"step", it.step_length},
                                   {"time", it.cumulative_time}});
         }
+        nlohmann::json attempts = nlohmann::json::array();
+        for (const FieldRepairAttempt& t : r.repair.attempts) {
+            attempts.push_back({{"rings", t.rings},
+                                {"smoothing_steps", t.steps},
+                                {"region_faces", t.region_faces},
+                                {"vertices_moved", t.vertices_moved},
+                                {"largest_move", t.largest_move},
+                                {"inverted", t.inverted},
+                                {"degenerate", t.degenerate},
+                                {"assembled", t.assembled},
+                                {"singularities_kept", t.singularities_kept},
+                                {"success", t.success},
+                                {"time", t.time}});
+        }
+        const nlohmann::json repair = {{"ran", r.repair.ran},
+                                       {"success", r.repair.success},
+                                       {"folded_faces", r.repair.folded_faces},
+                                       {"description", r.repair.describe()},
+                                       {"attempts", attempts}};
         const nlohmann::json report = {
+            {"local_repair", repair},
             {"command", "seamless"},
             {"mesh", a.mesh},
             {"faces", mesh.num_simplices()},

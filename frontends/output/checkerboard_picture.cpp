@@ -1,37 +1,27 @@
 #include "frontends/output/picture_plugin.h"
 
 #include <vtkActor.h>
-#include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
-#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
-#include <vtkPNGWriter.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
-#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
-#include <vtkTextActor.h>
-#include <vtkTextProperty.h>
 #include <vtkTexture.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
-#include <mutex>
 #include <numeric>
 #include <vector>
 
-#include "frontends/output/x_display.h"
-#include "geometry/io/atomic_file.h"
-#include "geometry/io/vtk_capture.h"
+#include "frontends/output/vtk_scene.h"
 #include "optim/errors.h"
 
 namespace sa {
@@ -210,67 +200,10 @@ vtkSmartPointer<vtkImageData> make_checkerboard(const CheckerboardPicture& pictu
     return image;
 }
 
-/// Turns and zooms the camera so that the projected vertices fill the box [-1 + margin,
-/// 1 - margin] x [-1 + margin, top] in normalized device coordinates, centred. A few rounds,
-/// since panning a perspective view moves near and far points differently.
-void fit_camera(vtkRenderer* renderer, const Eigen::MatrixXd& points, double aspect, double top) {
-    constexpr double kMargin = 0.06;
-    vtkCamera* camera = renderer->GetActiveCamera();
-    const double bottom = -1.0 + kMargin, half_width = 1.0 - kMargin;
-    const double half_height = 0.5 * (top - bottom), centre_y = 0.5 * (top + bottom);
-    for (int round = 0; round < 4; ++round) {
-        renderer->ResetCameraClippingRange();
-        vtkMatrix4x4* m = camera->GetCompositeProjectionTransformMatrix(aspect, -1.0, 1.0);
-        Eigen::Array2d lo(1e300, 1e300), hi(-1e300, -1e300);
-        for (Eigen::Index v = 0; v < points.rows(); ++v) {
-            const double p[4] = {points(v, 0), points(v, 1), points(v, 2), 1.0};
-            double q[4];
-            m->MultiplyPoint(p, q);
-            if (q[3] <= 0.0) continue;  // behind the camera: cannot happen after ResetCamera
-            const Eigen::Array2d ndc(q[0] / q[3], q[1] / q[3]);
-            lo = lo.min(ndc);
-            hi = hi.max(ndc);
-        }
-        if (!(hi[0] > lo[0]) || !(hi[1] > lo[1])) return;  // a point or a segment: leave as is
-        const double zoom =
-            std::min(2.0 * half_width / (hi[0] - lo[0]), 2.0 * half_height / (hi[1] - lo[1]));
-        camera->Zoom(zoom);
-        // After the zoom the projection has scaled by `zoom` about the centre; pan the rest.
-        const double dx = 0.5 * (lo[0] + hi[0]) * zoom,
-                     dy = 0.5 * (lo[1] + hi[1]) * zoom - centre_y;
-        const double tan_half = std::tan(0.5 * camera->GetViewAngle() * M_PI / 180.0);
-        const double reach = camera->GetDistance() * tan_half;
-        double up[3], direction[3], right[3];
-        camera->GetViewUp(up);
-        camera->GetDirectionOfProjection(direction);
-        right[0] = direction[1] * up[2] - direction[2] * up[1];
-        right[1] = direction[2] * up[0] - direction[0] * up[2];
-        right[2] = direction[0] * up[1] - direction[1] * up[0];
-        double position[3], focal[3];
-        camera->GetPosition(position);
-        camera->GetFocalPoint(focal);
-        for (int c = 0; c < 3; ++c) {
-            const double move = dx * reach * aspect * right[c] + dy * reach * up[c];
-            position[c] += move;
-            focal[c] += move;
-        }
-        camera->SetPosition(position);
-        camera->SetFocalPoint(focal);
-    }
-    renderer->ResetCameraClippingRange();
-}
-
 // ---- Rendering ------------------------------------------------------------------------------
 
-// Serializes the calls (see checkerboard_picture.h).
-std::mutex& render_mutex() {
-    static std::mutex mutex;
-    return mutex;
-}
-
-/// Renders the scene on `display` and returns the picture.
-vtkSmartPointer<vtkImageData> render(Display* display, const Eigen::MatrixXd& points,
-                                     vtkPolyData* surface, const CheckerboardPicture& picture) {
+/// The checkerboard-textured surface as a renderer's actor.
+vtkSmartPointer<vtkRenderer> scene(vtkPolyData* surface, const CheckerboardPicture& picture) {
     vtkNew<vtkTexture> texture;
     texture->SetInputData(make_checkerboard(picture));
     texture->RepeatOn();
@@ -291,54 +224,10 @@ vtkSmartPointer<vtkImageData> render(Display* display, const Eigen::MatrixXd& po
     property->SetDiffuse(0.8);
     property->SetSpecular(0.0);
 
-    vtkNew<vtkRenderer> renderer;
+    auto renderer = vtkSmartPointer<vtkRenderer>::New();
     renderer->SetBackground(picture.background.data());
     renderer->AddActor(actor);
-
-    // The title: the fitted mesh stays below it.
-    const int font_size = std::max(12, picture.height / 36);
-    const int title_top = std::max(4, picture.height / 60);
-    double top = 1.0 - 0.06;
-    vtkNew<vtkTextActor> title;
-    if (!picture.title.empty()) {
-        title->SetInput(picture.title.c_str());
-        vtkTextProperty* text = title->GetTextProperty();
-        text->SetFontFamilyToArial();
-        text->SetFontSize(font_size);
-        text->SetColor(0.1, 0.1, 0.1);
-        text->SetJustificationToCentered();
-        text->SetVerticalJustificationToTop();
-        title->SetDisplayPosition(picture.width / 2, picture.height - title_top);
-        renderer->AddActor2D(title);
-        top = 1.0 - 2.0 * (title_top + 1.8 * font_size) / picture.height;
-    }
-
-    renderer->ResetCamera();
-    vtkCamera* camera = renderer->GetActiveCamera();
-    camera->Azimuth(picture.azimuth);
-    camera->Elevation(picture.elevation);
-    camera->OrthogonalizeViewUp();
-    renderer->ResetCamera();
-    fit_camera(renderer, points, double(picture.width) / picture.height, top);
-
-    vtkNew<vtkRenderWindow> window;
-    window->SetDisplayId(display);
-    window->SetOffScreenRendering(1);
-    window->SetSize(picture.width, picture.height);
-    window->SetMultiSamples(8);
-    window->AddRenderer(renderer);
-    window->Render();
-
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(window);
-    grab->SetInputBufferTypeToRGB();
-    grab->ReadFrontBufferOff();
-    grab->Update();
-    auto image = vtkSmartPointer<vtkImageData>::New();
-    image->DeepCopy(grab->GetOutput());
-    grab->SetInput(nullptr);
-    window->Finalize();  // before the display connection closes
-    return image;
+    return renderer;
 }
 
 }  // namespace
@@ -350,35 +239,8 @@ void write_checkerboard_png_impl(const std::string& path, const Eigen::MatrixXd&
     Eigen::MatrixXd points = Eigen::MatrixXd::Zero(positions.rows(), 3);
     points.leftCols(positions.cols()) = positions;
     const vtkSmartPointer<vtkPolyData> surface = make_surface(points, faces, uv);
-
-    std::lock_guard<std::mutex> lock(render_mutex());
-    VtkCapture caught;
-    vtkSmartPointer<vtkImageData> image;
-    {
-        const XDisplay display(picture.width, picture.height, "write_checkerboard_png");
-        image = render(display.get(), points, surface, picture);
-    }
-    int dims[3];
-    image->GetDimensions(dims);
-    if (dims[0] != picture.width || dims[1] != picture.height) {
-        const std::string why = caught.first_message();
-        throw InputError("write_checkerboard_png: rendering gave a " + std::to_string(dims[0]) +
-                         " x " + std::to_string(dims[1]) + " picture instead of " +
-                         std::to_string(picture.width) + " x " + std::to_string(picture.height) +
-                         (why.empty() ? "" : " (" + why + ")"));
-    }
-
-    AtomicFile file(path, true);
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetFileName(file.temporary_path().c_str());
-    writer->SetInputData(image);
-    writer->Write();
-    if (writer->GetErrorCode() != 0) {
-        const std::string why = caught.first_message();
-        throw InputError(path + ": cannot write the picture" +
-                         (why.empty() ? "" : " (" + why + ")"));
-    }
-    file.commit();
+    const vtkSmartPointer<vtkRenderer> renderer = scene(surface, picture);
+    render_scene_png(path, renderer, points, scene_view(picture), "write_checkerboard_png");
 }
 
 }  // namespace sa

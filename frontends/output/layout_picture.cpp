@@ -7,28 +7,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "frontends/output/colour_map.h"
 #include "geometry/io/atomic_file.h"
 #include "optim/errors.h"
 
 namespace sa {
-
-namespace {
-
-/// Viridis, sampled at 9 points and interpolated linearly.
-std::array<double, 3> viridis(double t) {
-    static const double stops[9][3] = {
-        {0.267, 0.005, 0.329}, {0.278, 0.175, 0.483}, {0.231, 0.322, 0.546},
-        {0.173, 0.449, 0.558}, {0.128, 0.567, 0.551}, {0.153, 0.680, 0.510},
-        {0.361, 0.786, 0.388}, {0.668, 0.862, 0.196}, {0.993, 0.906, 0.144}};
-    t = std::clamp(t, 0.0, 1.0) * 8.0;
-    const int i = std::min(int(t), 7);
-    const double f = t - i;
-    return {stops[i][0] + f * (stops[i + 1][0] - stops[i][0]),
-            stops[i][1] + f * (stops[i + 1][1] - stops[i][1]),
-            stops[i][2] + f * (stops[i + 1][2] - stops[i][2])};
-}
-
-}  // namespace
 
 void write_layout_png_impl(const std::string& path, const Eigen::MatrixXd& uv,
                            const Eigen::MatrixXi& faces, const Eigen::VectorXd& values,

@@ -20,15 +20,48 @@ nlohmann::json quality_json(const MapQuality& q) {
             {"isometric", stat(q.isometric)}, {"volumetric", stat(q.volumetric)}};
 }
 
+namespace {
+nlohmann::json input_json(const MappingProblem& problem) {
+    return {{"source", problem.source},
+            {"vertices", problem.mesh.num_vertices()},
+            {"simplices", problem.mesh.num_simplices()},
+            {"simplex_dimension", problem.mesh.simplex_dimension()},
+            {"rest_dimension", problem.mesh.ambient_dimension()},
+            {"handles", problem.handles.size()}};
+}
+}  // namespace
+
+nlohmann::json infeasible_report(const MappingProblem& problem,
+                                 const InfeasibleProblemError& error) {
+    const HandleFeasibility& f = error.diagnosis();
+    nlohmann::json conflicts = nlohmann::json::array();
+    for (const HandleConflict& c : f.conflicts) {
+        conflicts.push_back(
+            {{"vertex", c.vertex},
+             {"first", std::vector<double>(c.first.data(), c.first.data() + c.first.size())},
+             {"second", std::vector<double>(c.second.data(), c.second.data() + c.second.size())}});
+    }
+    nlohmann::json report;
+    report["input"] = input_json(problem);
+    report["message"] = error.what();
+    report["success"] = false;
+    report["infeasible"] = {{"description", f.describe()},
+                            {"fixed_simplices", f.fixed_simplices},
+                            {"inverted", f.inverted.size()},
+                            {"flat", f.flat.size()},
+                            {"conflicting_handles", f.conflicts.size()},
+                            {"collapsed_edges", f.collapsed_edges.size()},
+                            {"inverted_simplices", f.inverted},
+                            {"flat_simplices", f.flat},
+                            {"conflicts", conflicts},
+                            {"collapsed_edge_list", f.collapsed_edges}};
+    return report;
+}
+
 nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOptions& o,
                           const SimplexAssemblyResult& r) {
     nlohmann::json report;
-    report["input"] = {{"source", problem.source},
-                       {"vertices", problem.mesh.num_vertices()},
-                       {"simplices", problem.mesh.num_simplices()},
-                       {"simplex_dimension", problem.mesh.simplex_dimension()},
-                       {"rest_dimension", problem.mesh.ambient_dimension()},
-                       {"handles", problem.handles.size()}};
+    report["input"] = input_json(problem);
     report["options"] = {
         {"distortion", to_string(o.distortion)},
         {"bound", number(o.bound)},

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "frontends/simplex_assembly/simplex_assembly.h"
+#include "geometry/handle_feasibility.h"
 
 namespace sa {
 
@@ -13,6 +14,12 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
                           const SimplexAssemblyResult& result);
 
 nlohmann::json quality_json(const MapQuality& quality);
+
+/// The report of a problem stopped before any optimization because its handles make it
+/// infeasible: "input", "message" and "infeasible" (the counts and every simplex, handle and edge
+/// found, handle_feasibility.h), "success": false.
+nlohmann::json infeasible_report(const MappingProblem& problem,
+                                 const InfeasibleProblemError& error);
 
 /// Writes `report` (indented) through AtomicFile.
 void write_json(const std::string& path, const nlohmann::json& report);

@@ -1,17 +1,19 @@
 #pragma once
-// The picture writers live in the plugin libsa_pictures.so (checkerboard_picture.cpp with VTK's
-// OpenGL rendering and X11, layout_picture.cpp with Cairo), loaded on the first picture
-// (geometry/io/plugin_library.h); pictures.cpp forwards the functions of checkerboard_picture.h
-// and layout_picture.h to this table.
+// The picture writers live in the plugin libsa_pictures.so (checkerboard_picture.cpp and
+// surface_value_picture.cpp with VTK's OpenGL rendering and X11, layout_picture.cpp with Cairo),
+// loaded on the first picture (geometry/io/plugin_library.h); pictures.cpp forwards the functions
+// of checkerboard_picture.h, layout_picture.h and surface_value_picture.h to this table.
 
 #include "frontends/output/checkerboard_picture.h"
 #include "frontends/output/layout_picture.h"
+#include "frontends/output/surface_value_picture.h"
 
 namespace sa {
 
 struct PictureFunctions {
     decltype(&sa::write_checkerboard_png) write_checkerboard_png;
     decltype(&sa::write_layout_png) write_layout_png;
+    decltype(&sa::write_surface_value_png) write_surface_value_png;
 };
 
 // The implementations inside the plugin, with the contracts of the public functions.
@@ -22,6 +24,10 @@ void write_layout_png_impl(const std::string& path, const Eigen::MatrixXd& uv,
                            const Eigen::MatrixXi& faces, const Eigen::VectorXd& values,
                            const LayoutPicture& picture,
                            const std::vector<unsigned char>& inverted);
+void write_surface_value_png_impl(const std::string& path, const Eigen::MatrixXd& positions,
+                                  const Eigen::MatrixXi& faces, const Eigen::VectorXd& values,
+                                  const SurfaceValuePicture& picture,
+                                  const std::vector<unsigned char>& flagged);
 
 }  // namespace sa
 

@@ -25,4 +25,11 @@ void write_layout_png(const std::string& path, const Eigen::MatrixXd& uv,
     pictures().write_layout_png(path, uv, faces, values, picture, inverted);
 }
 
+void write_surface_value_png(const std::string& path, const Eigen::MatrixXd& positions,
+                             const Eigen::MatrixXi& faces, const Eigen::VectorXd& values,
+                             const SurfaceValuePicture& picture,
+                             const std::vector<unsigned char>& flagged) {
+    pictures().write_surface_value_png(path, positions, faces, values, picture, flagged);
+}
+
 }  // namespace sa

@@ -7,6 +7,7 @@
 #include "geometry/initial_maps.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
+#include "optim/time_budget.h"
 
 namespace sa {
 
@@ -38,6 +39,7 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
                                     const ParameterizationOptions& options,
                                     const SimplexAssemblyObserver& observer) {
     Stopwatch total, stage;
+    const TimeBudget budget(options.solver.max_time_seconds);
     ParameterizationResult result;
     validate_mesh(mesh, source);
     const MeshTopology topology = mesh_topology(mesh, source);
@@ -118,17 +120,78 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
     }
     result.success = have_result;
     if (!have_result) result.uv = result.solve.positions;
+    if (!have_result && options.fallback) {
+        // The requested start folded beyond repair, or its result is over the bound: a start that
+        // cannot fold, kept valid by a barrier on the vertex positions (start_fallback.h).
+        const Verification& v = result.solve.verification;
+        const std::string reason =
+            "the " + (initial_uv != nullptr ? std::string("given") : to_string(initial)) +
+            " start's result " +
+            (v.passed()
+                 ? "is over the bound (largest distortion " + std::to_string(v.max_distortion) +
+                       " > " + std::to_string(v.bound) + ")"
+                 : "does not verify (" + std::to_string(v.inverted) + " inverted, " +
+                       std::to_string(v.degenerate) + " degenerate)");
+        MappingProblem fallback_problem = problem;
+        result.fallback = fall_back_to_tutte(
+            fallback_problem, topology, with_time_left(options.solver, budget), observer, reason);
+        const StartFallback& f = result.fallback;
+        const bool keep =
+            f.verified() && (!v.passed() || f.solve.verification.max_distortion < v.max_distortion);
+        if (keep) {
+            result.uv = f.solve.positions;
+            result.solve = f.solve;
+            result.reached_bound = f.solve.verification.max_distortion;
+            result.success = f.solve.verification.within_bound();
+        }
+        if (keep && options.optimal_bound_rounds > 0 && !budget.exhausted()) {
+            // The optimal bound from the fallback's map: the descent's bound rounds (each bound
+            // just above the largest distortion reached) lowered until they stop improving; the
+            // target 1 + 1e-9 is never reached.
+            Stopwatch round_watch;
+            MappingProblem lowered = problem;
+            lowered.initial = result.uv;
+            lowered.reference = f.initial_uv;
+            SimplexAssemblyOptions o = with_time_left(options.solver, budget);
+            o.bound = 1.0 + 1e-9;
+            const VertexDescentResult d = run_vertex_descent(lowered, o, observer);
+            BoundRound record;
+            record.bound = d.rounds.empty() ? kInfinity : d.rounds.back().bound;
+            record.max_distortion = d.solve.verification.max_distortion;
+            record.success = d.solve.success;
+            for (const DescentRound& r : d.rounds) record.iterations += r.iterations;
+            record.time = round_watch.seconds();
+            result.rounds.push_back(record);
+            if (d.solve.success && record.max_distortion < result.reached_bound) {
+                result.uv = d.solve.positions;
+                result.solve = d.solve;
+                result.solve.verification.bound = options.solver.bound;
+                result.reached_bound = record.max_distortion;
+            }
+        }
+    }
     result.boundary_violations_after = count_boundary_violations(fans, result.uv);
     if (options.free_boundary_injective && result.boundary_violations_after > 0)
         result.success = false;
     std::ostringstream message;
-    message << (result.success ? "success: " : "FAILED: ") << result.solve.verification.describe()
-            << "; " << result.boundary_violations_after
+    message << (result.success ? "success: " : "FAILED: ");
+    if (result.fallback.used) {
+        message << "fallback (" << result.fallback.reason << "): ";
+        message << (result.fallback.verified()
+                        ? "from " + result.fallback.start + ", Newton on the vertex positions; "
+                        : "no start verified; ");
+    }
+    message << result.solve.verification.describe() << "; " << result.boundary_violations_after
             << " boundary vertices with an angle sum >= 2 pi (" << result.boundary_violations_before
             << " in the initial map)";
     if (options.optimal_bound_rounds > 0) {
         message << "; optimal bound: " << result.rounds.size() << " rounds, reached "
                 << result.reached_bound;
+    }
+    const Verification& final_check = result.solve.verification;
+    if (final_check.passed() && !final_check.within_bound()) {
+        message << "; the bound " << final_check.bound
+                << " was not reached, the map written has no foldovers";
     }
     message << ".";
     result.message = message.str();

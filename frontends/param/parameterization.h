@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "frontends/param/start_fallback.h"
 #include "frontends/simplex_assembly/simplex_assembly.h"
 
 namespace sa {
@@ -30,6 +31,9 @@ struct ParameterizationOptions {
     double optimal_bound_tolerance = 1e-3;
     /// The boundary-angle barrier E_theta (full mode only).
     bool free_boundary_injective = false;
+    /// When the first round's result does not verify (or is over the bound), start again from a
+    /// map that cannot fold (start_fallback.h) and keep the better verified result.
+    bool fallback = true;
 };
 
 struct BoundRound {
@@ -51,6 +55,8 @@ struct ParameterizationResult {
     Index boundary_violations_after = 0;
     double initial_map_time = 0.0;
     double total_time = 0.0;
+    /// The fallback, when the requested start's result was not kept (fallback.used).
+    StartFallback fallback;
     bool success = false;
     std::string message;
 };

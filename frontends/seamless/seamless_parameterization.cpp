@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "frontends/seamless/cone_obstruction.h"
 #include "geometry/cut_graph.h"
 #include "geometry/frame_field.h"
 #include "optim/errors.h"
@@ -116,6 +117,12 @@ SeamlessResult seamless_parameterization(const SimplicialMesh& input,
     const Eigen::MatrixXd directions = frame_cross_directions(frames, r.field_before);
     r.singularities_before = cross_field_singularities(mesh, topology, directions);
     r.times.field = stage.lap();
+    r.infeasible = seamless_cone_obstruction(mesh, topology, r.singularities_before);
+    if (!r.infeasible.empty()) {
+        r.message = "INFEASIBLE: " + r.infeasible + "; nothing was optimized.";
+        r.times.total = total.seconds();
+        return r;
+    }
 
     // 2. Matchings and the cut.
     r.matching = cross_field_matchings(mesh, topology, directions);
@@ -182,6 +189,7 @@ SeamlessResult seamless_parameterization(const SimplicialMesh& input,
       << (r.integrable.assembled ? "" : " (not assembled)") << "; the plain Poisson map of the "
       << "input field has " << r.plain.quality.inverted << " inverted faces.";
     r.message = m.str();
+    if (!r.success && options.local_repair) return repair_folded_field(r, options, logger);
     return r;
 }
 

@@ -11,6 +11,8 @@
 //   5. the Poisson map of phi', verified from its (u, v): inverted and degenerate faces (the rule
 //      of map_quality.h), the largest seam mismatch, and its cone points — per interior vertex,
 //      1 - (sum of its corner angles in (u, v)) / 2 pi — compared with the singularities of phi.
+// Before step 2, a configuration of singularities that no seamless parameterization can have
+// (cone_obstruction.h) stops the pipeline with `infeasible` set.
 // Success: phi' assembled (sum curl^2 below tolerance), no inverted or degenerate face, seam
 // mismatch within tolerance, and cone points exactly at phi's singularities with their indices
 // (angle sums within cone_tolerance of quarter turns).
@@ -24,6 +26,7 @@
 #include <vector>
 
 #include "frontends/seamless/integrable_field.h"
+#include "frontends/seamless/local_field_repair.h"
 #include "geometry/cross_field.h"
 #include "geometry/map_quality.h"
 #include "geometry/seamless_poisson.h"
@@ -46,6 +49,9 @@ struct SeamlessOptions {
     /// pi / 2.
     double cone_tolerance = 1e-6;
     IntegrableFieldOptions integrable;
+    /// When the result does not verify, smooth the field's geometry locally and run again
+    /// (local_field_repair.h, the paper's repair); the output keeps the input positions.
+    bool local_repair = true;
 };
 
 struct CurlStats {
@@ -81,6 +87,12 @@ struct SeamlessResult {
     VerifiedSeamlessMap plain;   ///< Poisson of phi
     VerifiedSeamlessMap result;  ///< Poisson of phi'
     IntegrableField integrable;
+    /// The local repair, when the first result did not verify (repair.ran).
+    FieldRepair repair;
+    /// Why no seamless parameterization can have the field's singularities
+    /// (cone_obstruction.h), when that is so: then nothing was optimized, `result` is empty and
+    /// success is false.
+    std::string infeasible;
     struct Times {
         double field = 0.0, cut = 0.0, plain_poisson = 0.0, integrable = 0.0, poisson = 0.0,
                verification = 0.0, total = 0.0;

@@ -10,6 +10,7 @@
 #include "energies/boundary_angle_energy.h"
 #include "energies/distortion.h"
 #include "geometry/disassembly.h"
+#include "geometry/handle_feasibility.h"
 #include "geometry/vertex_recovery.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
@@ -79,14 +80,11 @@ void check_input(const MappingProblem& p, int d) {
     }
     if (!p.initial.leftCols(d).allFinite())
         throw InputError(src + ": the initial map has a non-finite coordinate");
-    std::set<Index> seen;
     for (Index h : p.handles) {
         if (h < 0 || h >= p.mesh.num_vertices()) {
             throw InputError(src + ": handle vertex " + std::to_string(h) + " outside [0, " +
                              std::to_string(p.mesh.num_vertices()) + ")");
         }
-        if (!seen.insert(h).second)
-            throw InputError(src + ": handle vertex " + std::to_string(h) + " is listed twice");
     }
     if (p.reference.size() > 0 &&
         (p.reference.rows() != p.mesh.num_vertices() || p.reference.cols() < d)) {
@@ -126,6 +124,21 @@ void check_finite_affine_parts(const MappingProblem& input, const std::vector<Ma
     }
 }
 
+/// What the handles alone decide (handle_feasibility.h): throws InfeasibleProblemError before
+/// anything is optimized when they force an inverted or flat simplex, fix a vertex at two places
+/// or collapse a rest edge; a vertex listed twice at one place is a malformed list (InputError).
+void require_feasible_handles(const MappingProblem& p, const Eigen::MatrixXd& targets,
+                              double tolerance) {
+    const HandleFeasibility f = check_handle_feasibility(p.mesh, p.handles, targets, tolerance);
+    if (!f.feasible()) throw InfeasibleProblemError(p.source, f);
+    std::set<Index> seen;
+    for (Index h : p.handles) {
+        if (!seen.insert(h).second)
+            throw InputError(p.source + ": handle vertex " + std::to_string(h) +
+                             " is listed twice");
+    }
+}
+
 }  // namespace
 
 template <int D>
@@ -153,6 +166,8 @@ std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
                                     ? Eigen::RowVectorXd(input.targets.row(k).head(D))
                                     : Eigen::RowVectorXd(p->initial_map.row(input.handles[k]));
     }
+    require_feasible_handles(input, p->target_rows,
+                             options.handle_tolerance * bounding_box_diagonal(p->initial_map));
 
     // Normalize by the rest diagonal; each side centred on its own bounding box.
     p->scale = 1.0 / bounding_box_diagonal(original.vertices);

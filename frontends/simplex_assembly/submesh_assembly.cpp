@@ -9,6 +9,7 @@
 #include "energies/distortion.h"
 #include "frontends/simplex_assembly/submesh_start.h"
 #include "frontends/simplex_assembly/vertex_stage.h"
+#include "geometry/handle_feasibility.h"
 #include "geometry/map_quality.h"
 #include "geometry/submesh.h"
 #include "optim/parallel.h"
@@ -52,7 +53,14 @@ SimplexAssemblyResult solve_region(const MappingProblem& input, const MeshTopolo
     o.num_threads = threads;
     SimplexAssemblyObserver observer;
     if (logger) observer.logger = [&logger](const std::string& line) { logger("    " + line); };
-    return run_simplex_assembly(local, o, observer);
+    try {
+        return run_simplex_assembly(local, o, observer);
+    } catch (const InfeasibleProblemError& e) {
+        // The region's fixed outer vertices already force a bad simplex: it must grow.
+        SimplexAssemblyResult failed;
+        failed.message = e.what();
+        return failed;
+    }
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "geometry/io/dmat_io.h"
+#include "geometry/io/rawfield_io.h"
 #include "geometry/io/text_reader.h"
 #include "optim/errors.h"
 
@@ -220,6 +221,7 @@ FrameFieldFile read_crossfield(const std::string& path, Index num_faces) {
 FrameFieldFile read_frame_field(const std::string& path, Index num_faces) {
     check_face_count("read_frame_field", num_faces);
     if (io::lower_extension(path) == ".crossfield") return read_crossfield(path, num_faces);
+    if (io::lower_extension(path) == ".rawfield") return read_rawfield(path, num_faces);
 
     const Eigen::MatrixXd matrix = read_dmat(path);
     const Eigen::Index rows = matrix.rows();

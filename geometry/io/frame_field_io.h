@@ -16,6 +16,7 @@
 //   .crossfield (lilium.crossfield; libigl's MIQ tutorial writes it with writePolyVf): a first
 //     line `k #F` (the number of vectors per face, the number of faces), then one line per face:
 //     the flag, then the k vectors.
+//   .rawfield (Directional): `N #F`, then N vectors per face; N = 4 only (rawfield_io.h).
 //   Any other extension is read as a .dmat. A _b.dmat / _bc.dmat pair: see
 //   read_frame_field_constraints().
 //

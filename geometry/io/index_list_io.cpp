@@ -9,7 +9,7 @@
 
 namespace sa {
 
-std::vector<Index> read_index_list(const std::string& path) {
+std::vector<Index> read_index_list(const std::string& path, std::vector<int>* index_lines) {
     io::TextReader reader(path);
     std::vector<long long> values;
     std::vector<int> lines;
@@ -57,6 +57,7 @@ std::vector<Index> read_index_list(const std::string& path) {
     }
     std::vector<Index> indices;
     indices.reserve(values.size() - first);
+    if (index_lines) index_lines->clear();
     std::unordered_map<Index, int> first_line_of;
     for (std::size_t i = first; i < values.size(); ++i) {
         const auto index = static_cast<Index>(values[i]);
@@ -66,6 +67,7 @@ std::vector<Index> read_index_list(const std::string& path) {
                                          " repeated (first on line " + std::to_string(it->second) +
                                          ")");
         indices.push_back(index);
+        if (index_lines) index_lines->push_back(lines[i]);
     }
     return indices;
 }

@@ -17,8 +17,10 @@ namespace sa {
 
 /// Reads an index list (0-based). Throws InputError `FILE:LINE: ...` on a token that is not a
 /// non-negative integer, a repeated index (naming it and both lines), or a first number that is
-/// a count by its comment or layout but does not match the numbers after it.
-std::vector<Index> read_index_list(const std::string& path);
+/// a count by its comment or layout but does not match the numbers after it. `lines`, when given,
+/// receives the 1-based line of each index (for the caller's own messages, e.g. an index out of a
+/// mesh's range).
+std::vector<Index> read_index_list(const std::string& path, std::vector<int>* lines = nullptr);
 
 /// Writes a count header line, then one index per line, so that the file reads back the same
 /// whatever its first index. Throws InvalidArgumentError on a negative or repeated index, and

@@ -3,13 +3,16 @@ set(SA_GEOMETRY_IO_SOURCES
     io/dmat_io.cpp
     io/frame_field_io.cpp
     io/index_list_io.cpp
+    io/indexed_positions_io.cpp
     io/medit_io.cpp
     io/mesh_file.cpp
     io/obj_io.cpp
     io/off_io.cpp
     io/openmesh_io.cpp
     io/plugin_library.cpp
+    io/polycube_labels_io.cpp
     io/problem_io.cpp
+    io/rawfield_io.cpp
     io/tetgen_io.cpp
     io/vtk_io.cpp
 )

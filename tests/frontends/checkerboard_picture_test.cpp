@@ -15,6 +15,7 @@
 
 #include "geometry/mesh_generators.h"
 #include "optim/errors.h"
+#include "render_test_util.h"
 
 namespace sa {
 namespace {
@@ -51,26 +52,6 @@ class ScopedEnv {
     const char* name_;
     std::optional<std::string> old_;
 };
-
-bool xvfb_on_path() {
-    const char* path = std::getenv("PATH");
-    std::string dirs = path ? path : "";
-    for (std::size_t start = 0; start <= dirs.size();) {
-        std::size_t end = dirs.find(':', start);
-        if (end == std::string::npos) end = dirs.size();
-        if (access((dirs.substr(start, end - start) + "/Xvfb").c_str(), X_OK) == 0) return true;
-        start = end + 1;
-    }
-    return false;
-}
-
-// Rendering needs an X display, or Xvfb for the renderer to start.
-#define SKIP_WITHOUT_X()                                                               \
-    do {                                                                               \
-        const char* display = std::getenv("DISPLAY");                                  \
-        if (!(display && *display) && !xvfb_on_path())                                 \
-            GTEST_SKIP() << "no DISPLAY and no Xvfb (scripts/setup.sh installs xvfb)"; \
-    } while (0)
 
 // A bumpy unit square in space, uv = 4 (x, y): 4 x 4 squares.
 struct Surface {

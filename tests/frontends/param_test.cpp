@@ -106,6 +106,111 @@ TEST(Parameterization, OptimalBoundLowersTheLargestDistortion) {
     EXPECT_LE(r.reached_bound, r.rounds[0].max_distortion);
 }
 
+// A flat closed surface with a one-vertex hole and sliver triangles (the class of OptCuts'
+// golf.obj): a sphere squashed to 3% of its height, bent, the star of one vertex removed, and
+// every fifth triangle made a sliver by moving a vertex close to its opposite edge. LSCM folds
+// it, Simplex Assembly from LSCM or from Tutte does not assemble it, and Tutte's map has
+// distortions in the hundreds (E_C = e^{d} overflows without the exponent's continuation).
+SimplicialMesh flat_ball_with_slivers(int n) {
+    const SimplicialMesh sphere = sphere_triangles(n);
+    Index hole = 0;
+    const Eigen::Vector3d toward = Eigen::Vector3d(-0.3, 0.9, 0.2).normalized();  // on the rim
+    for (Index v = 0; v < sphere.num_vertices(); ++v) {
+        if (sphere.vertices.row(v).dot(toward) > sphere.vertices.row(hole).dot(toward)) hole = v;
+    }
+    std::vector<Eigen::Vector3i> kept;
+    for (Index s = 0; s < sphere.num_simplices(); ++s) {
+        const Eigen::Vector3i f = sphere.simplices.row(s).transpose();
+        if (f[0] != hole && f[1] != hole && f[2] != hole) kept.push_back(f);
+    }
+    SimplicialMesh mesh;
+    mesh.vertices = sphere.vertices;
+    mesh.simplices.resize(kept.size(), 3);
+    for (std::size_t k = 0; k < kept.size(); ++k) mesh.simplices.row(k) = kept[k].transpose();
+    // The hole's vertex is unused: drop it (the last index takes its place).
+    const Index last = mesh.num_vertices() - 1;
+    mesh.vertices.row(hole) = mesh.vertices.row(last);
+    mesh.vertices.conservativeResize(last, 3);
+    for (Index s = 0; s < mesh.num_simplices(); ++s) {
+        for (int k = 0; k < 3; ++k) {
+            if (mesh.simplices(s, k) == last) mesh.simplices(s, k) = int(hole);
+        }
+    }
+    for (Index v = 0; v < mesh.num_vertices(); ++v) {
+        const double x = mesh.vertices(v, 0);
+        mesh.vertices(v, 1) = 1.3 * mesh.vertices(v, 1) + 0.5 * std::sin(2.0 * x);
+        mesh.vertices(v, 2) *= 0.03;
+    }
+    std::vector<unsigned char> moved(mesh.num_vertices(), 0);
+    for (Index s = 0; s < mesh.num_simplices(); s += 5) {
+        const Index a = mesh.simplices(s, 0), b = mesh.simplices(s, 1), c = mesh.simplices(s, 2);
+        if (moved[a] || moved[b] || moved[c]) continue;
+        moved[a] = 1;
+        const Eigen::RowVector3d middle = 0.5 * (mesh.vertices.row(b) + mesh.vertices.row(c));
+        mesh.vertices.row(a) = 0.05 * mesh.vertices.row(a) + 0.95 * middle;
+    }
+    return mesh;
+}
+
+// Every triangle of `uv` positively oriented and of non-negligible area, measured here.
+void expect_valid_layout(const SimplicialMesh& mesh, const Eigen::MatrixXd& uv) {
+    double largest = 0.0;
+    std::vector<double> area(mesh.num_simplices());
+    for (Index s = 0; s < mesh.num_simplices(); ++s) {
+        const Eigen::RowVector2d a = uv.row(mesh.simplices(s, 1)) - uv.row(mesh.simplices(s, 0)),
+                                 b = uv.row(mesh.simplices(s, 2)) - uv.row(mesh.simplices(s, 0));
+        area[s] = a.x() * b.y() - a.y() * b.x();
+        largest = std::max(largest, std::abs(area[s]));
+    }
+    for (Index s = 0; s < mesh.num_simplices(); ++s)
+        EXPECT_GT(area[s], 1e-14 * largest) << "triangle " << s;
+}
+
+TEST(Parameterization, FallsBackToTutteWhenTheLscmStartFoldsBeyondRepair) {
+    const SimplicialMesh mesh = flat_ball_with_slivers(8);
+    ParameterizationOptions without = conformal_options();
+    without.fallback = false;
+    const ParameterizationResult failed =
+        parameterize(mesh, "flat ball", nullptr, InitialMap::kLscm, without);
+    ASSERT_FALSE(failed.success) << "the case should defeat Simplex Assembly from LSCM";
+    EXPECT_GT(failed.initial_quality.inverted, 0) << "LSCM should fold";
+
+    const ParameterizationResult r =
+        parameterize(mesh, "flat ball", nullptr, InitialMap::kLscm, conformal_options());
+    EXPECT_TRUE(r.success) << r.message;
+    ASSERT_TRUE(r.fallback.used);
+    EXPECT_EQ(r.fallback.start, "tutte") << r.message;
+    EXPECT_NE(r.message.find("fallback"), std::string::npos) << r.message;
+    EXPECT_GT(r.fallback.rounds.size(), 1u) << "the exponent's continuation should take rounds";
+    EXPECT_EQ(r.solve.verification.inverted, 0);
+    EXPECT_EQ(r.solve.verification.degenerate, 0);
+    expect_valid_layout(mesh, r.uv);
+
+    // The optimal bound goes on from the fallback's map.
+    ParameterizationOptions optimal = conformal_options();
+    optimal.optimal_bound_rounds = 10;
+    const ParameterizationResult o =
+        parameterize(mesh, "flat ball", nullptr, InitialMap::kLscm, optimal);
+    EXPECT_TRUE(o.success) << o.message;
+    EXPECT_TRUE(o.fallback.used);
+    EXPECT_LT(o.reached_bound, r.reached_bound);
+    expect_valid_layout(mesh, o.uv);
+}
+
+TEST(Parameterization, AnUnreachableBoundIsReportedWithAMapWithoutFoldovers) {
+    const SimplicialMesh mesh = flat_ball_with_slivers(8);
+    ParameterizationOptions options = conformal_options();
+    options.solver.bound = 1.001;  // a sliver cannot stay a similarity of itself in a flat map
+    const ParameterizationResult r =
+        parameterize(mesh, "flat ball", nullptr, InitialMap::kLscm, options);
+    EXPECT_FALSE(r.success);
+    ASSERT_TRUE(r.fallback.used);
+    EXPECT_TRUE(r.solve.verification.passed()) << r.message;
+    EXPECT_FALSE(r.solve.verification.within_bound());
+    EXPECT_NE(r.message.find("was not reached"), std::string::npos) << r.message;
+    expect_valid_layout(mesh, r.uv);
+}
+
 TEST(Parameterization, RejectsMeshesThatAreNotDisks) {
     SimplicialMesh closed;
     closed.vertices.resize(4, 3);

@@ -46,8 +46,12 @@ class SaCommand : public ::testing::Test {
     }
     std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
-    // A plain-text problem: a grid with its boundary fixed and the interior scrambled.
-    std::string folded_problem(const std::string& name) {
+    // A plain-text problem: a grid with its boundary fixed and the interior scrambled; with
+    // `mirror`, the boundary is mirrored as well, which inverts the triangles at the corners (all
+    // three of their vertices are handles).
+    // With `collapse`, handle 1 sits where handle 0 does: the rest edge 0-1 has zero length.
+    std::string folded_problem(const std::string& name, bool mirror = false,
+                               bool collapse = false) {
         const SimplicialMesh mesh = grid_triangles(8, 8);
         const MeshTopology t = mesh_topology(mesh, "grid");
         std::mt19937 rng(3);
@@ -62,6 +66,8 @@ class SaCommand : public ::testing::Test {
             Eigen::RowVector2d p = mesh.vertices.row(v);
             if (t.boundary_vertex[v]) {
                 handles.push_back(v);
+                if (mirror) p.x() = 1.0 - p.x();
+                if (collapse && v == 1) p = mesh.vertices.row(0);
             } else {
                 p += Eigen::RowVector2d(u(rng), u(rng));
             }
@@ -123,6 +129,32 @@ TEST_F(SaCommand, BadInputGetsOneLineExitTwoAndNoOutput) {
     EXPECT_EQ(sa("map --rest " + problem).status, 2);                                 // no --out
     EXPECT_FALSE(fs::exists(path("out.vtu")));
     EXPECT_FALSE(fs::exists(path("out.node")));
+}
+
+TEST_F(SaCommand, MapDiagnosesHandlesThatRuleOutASolution) {
+    const std::string problem = folded_problem("mirrored.txt", true);
+    const Outcome r = sa("map --rest " + problem + " --out " + path("out.vtu") + " --report " +
+                         path("report.json"));
+    EXPECT_EQ(r.status, 1) << r.out << r.err;
+    EXPECT_NE(r.out.find("infeasible"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("are inverted"), std::string::npos) << r.out;
+    EXPECT_EQ(r.err, "") << "no progress row: nothing was optimized";
+    EXPECT_FALSE(fs::exists(path("out.vtu")));
+    const nlohmann::json report = nlohmann::json::parse(read(path("report.json")));
+    EXPECT_FALSE(report["success"].get<bool>());
+    // The two corner cells whose three vertices are boundary handles.
+    EXPECT_EQ(report["infeasible"]["inverted"].get<int>(), 2) << report.dump();
+    EXPECT_EQ(report["infeasible"]["inverted_simplices"].size(), 2u);
+    EXPECT_FALSE(report.contains("iterations"));
+
+    const Outcome collapsed = sa("map --rest " + folded_problem("collapsed.txt", false, true) +
+                                 " --out " + path("out.vtu"));
+    EXPECT_EQ(collapsed.status, 1) << collapsed.out << collapsed.err;
+    EXPECT_NE(collapsed.out.find("1 rest edges have both ends at one target (edges 0-1)"),
+              std::string::npos)
+        << collapsed.out;
+    EXPECT_EQ(collapsed.err, "");
+    EXPECT_FALSE(fs::exists(path("out.vtu")));
 }
 
 TEST_F(SaCommand, ExistingOutputsAreKeptWithoutForce) {

@@ -1,5 +1,7 @@
 #include "frontends/seamless/seamless_parameterization.h"
 
+#include "frontends/seamless/cone_obstruction.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -86,6 +88,54 @@ TEST(Seamless, WithoutAFieldTheSmoothestCrossFieldIsUsed) {
     EXPECT_EQ(r.field_source, "smoothest cross field");
     EXPECT_TRUE(r.success) << r.message;
     EXPECT_TRUE(r.singularities_before.empty());
+}
+
+TEST(Seamless, ATorusWithOnlyAPlusMinusQuarterPairIsInfeasible) {
+    const SimplicialMesh torus = torus_triangles(16, 8);
+    const MeshTopology t = mesh_topology(torus, "torus");
+    const std::string reason = seamless_cone_obstruction(torus, t, {{3, 0.25}, {40, -0.25}});
+    EXPECT_NE(reason.find("vertex 3"), std::string::npos) << reason;
+    EXPECT_NE(reason.find("vertex 40"), std::string::npos) << reason;
+    // Other configurations are not ruled out: two pairs, a +-1/2 pair, none, another genus.
+    EXPECT_EQ(seamless_cone_obstruction(torus, t, {{3, 0.25}, {9, -0.25}, {40, 0.25}, {50, -0.25}}),
+              "");
+    EXPECT_EQ(seamless_cone_obstruction(torus, t, {{3, 0.5}, {40, -0.5}}), "");
+    EXPECT_EQ(seamless_cone_obstruction(torus, t, {}), "");
+    const SimplicialMesh sphere = sphere_triangles(4);
+    EXPECT_EQ(
+        seamless_cone_obstruction(sphere, mesh_topology(sphere, "sphere"), {{0, 0.25}, {1, -0.25}}),
+        "");
+}
+
+// The repair's mechanics (local_field_repair.h) on a generated torus whose result is marked as
+// folded on two faces: a region around them is smoothed for the field only, the pipeline runs
+// again, and the result is verified on the input surface, whose positions stay.
+TEST(Seamless, LocalRepairSmoothsTheFieldsGeometryAndKeepsTheSurface) {
+    const SimplicialMesh torus = torus_triangles(24, 12);
+    SeamlessOptions options;
+    options.local_repair = false;
+    SeamlessResult folded = seamless_parameterization(torus, std::nullopt, options);
+    ASSERT_TRUE(folded.success) << folded.message;
+    for (Index f : {Index(100), Index(101)}) folded.result.quality.per_simplex[f].inverted = true;
+    folded.success = false;
+    options.local_repair = true;
+    const SeamlessResult r = repair_folded_field(folded, options, {});
+    ASSERT_TRUE(r.repair.ran);
+    EXPECT_EQ(r.repair.folded_faces, 2);
+    ASSERT_FALSE(r.repair.attempts.empty());
+    const FieldRepairAttempt& a = r.repair.attempts.front();
+    EXPECT_GT(a.vertices_moved, 0);
+    EXPECT_GT(a.largest_move, 0.0);
+    EXPECT_TRUE(r.success) << r.message;
+    EXPECT_TRUE(r.repair.success);
+    EXPECT_TRUE(r.singularities_kept);
+    EXPECT_EQ(r.result.quality.inverted, 0);
+    EXPECT_EQ(r.surface.vertices, torus.vertices);
+    // The cut mesh the (u, v) belong to has the input positions.
+    const CutMesh& cut = r.result.map.cut;
+    for (Index c = 0; c < cut.mesh.num_vertices(); ++c)
+        EXPECT_EQ(cut.mesh.vertices.row(c), torus.vertices.row(cut.original_vertex[c]));
+    EXPECT_NE(r.message.find("without the repair"), std::string::npos) << r.message;
 }
 
 TEST(Seamless, BadInputIsRejected) {

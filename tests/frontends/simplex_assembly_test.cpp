@@ -3,6 +3,7 @@
 #include <random>
 
 #include "frontends/simplex_assembly/simplex_assembly.h"
+#include "geometry/handle_feasibility.h"
 #include "geometry/mesh_generators.h"
 #include "geometry/mesh_topology.h"
 
@@ -63,6 +64,49 @@ TEST(SimplexAssembly, UntanglesAFolded3DMap) {
     SimplexAssemblyOptions options;
     const SimplexAssemblyResult r = run_simplex_assembly(p, options);
     expect_verified(r, p);
+}
+
+// Each check of handle_feasibility.h stops the run before the first iteration: the logger sees
+// no progress row, and the exception carries the diagnosis.
+TEST(SimplexAssembly, HandlesThatRuleOutASolutionStopBeforeOptimizing) {
+    MappingProblem box = scrambled(grid_tetrahedra(3, 3, 3), 0.05, 2);
+    std::vector<MappingProblem> cases;
+    {
+        MappingProblem mirrored = box;  // every fixed simplex inverted
+        for (Index h : mirrored.handles) mirrored.initial(h, 0) *= -1.0;
+        cases.push_back(mirrored);
+    }
+    {
+        MappingProblem twice = box;  // one handle at two places
+        twice.targets.resize(box.handles.size() + 1, 3);
+        for (std::size_t k = 0; k < box.handles.size(); ++k)
+            twice.targets.row(k) = box.initial.row(box.handles[k]);
+        twice.handles.push_back(box.handles[3]);
+        twice.targets.row(box.handles.size()) = box.initial.row(box.handles[3]);
+        twice.targets(box.handles.size(), 2) += 0.3;
+        cases.push_back(twice);
+    }
+    {
+        MappingProblem collapsed = scrambled(grid_triangles(6, 6), 0.03, 3);  // edge 0-1
+        collapsed.initial.row(1) = collapsed.initial.row(0);
+        cases.push_back(collapsed);
+    }
+    const std::vector<std::string> expected = {"are inverted", "fixed twice", "both ends"};
+    for (std::size_t c = 0; c < cases.size(); ++c) {
+        int rows = 0;
+        SimplexAssemblyObserver observer;
+        observer.logger = [&rows](const std::string&) { ++rows; };
+        try {
+            run_simplex_assembly(cases[c], SimplexAssemblyOptions{}, observer);
+            ADD_FAILURE() << "case " << c << ": no InfeasibleProblemError";
+        } catch (const InfeasibleProblemError& e) {
+            EXPECT_NE(std::string(e.what()).find(expected[c]), std::string::npos) << e.what();
+            EXPECT_FALSE(e.diagnosis().feasible());
+        }
+        EXPECT_EQ(rows, 0) << "case " << c << ": something was optimized";
+    }
+    // The same problems with feasible handles run as usual.
+    EXPECT_TRUE(run_simplex_assembly(box, SimplexAssemblyOptions{}).success);
 }
 
 }  // namespace

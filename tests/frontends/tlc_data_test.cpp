@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "frontends/simplex_assembly/simplex_assembly.h"
+#include "geometry/handle_feasibility.h"
 #include "geometry/io/problem_io.h"
 
 namespace sa {
@@ -58,6 +59,19 @@ INSTANTIATE_TEST_SUITE_P(Tlc, TlcProblem,
                              std::replace(name.begin(), name.end(), '-', '_');
                              return name;
                          });
+
+// infeasible-star fixes every boundary vertex where 392 tets whose vertices are all handles are
+// inverted: no map can exist, and the driver says so before optimizing anything.
+TEST(TlcInfeasible, StarIsDiagnosedBeforeOptimizing) {
+    const std::string path = tlc_path("infeasible-star");
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is absent";
+    try {
+        run_simplex_assembly(read_tlc(path), SimplexAssemblyOptions{});
+        ADD_FAILURE() << "no InfeasibleProblemError";
+    } catch (const InfeasibleProblemError& e) {
+        EXPECT_EQ(e.diagnosis().inverted.size() + e.diagnosis().flat.size(), 392u) << e.what();
+    }
+}
 
 }  // namespace
 }  // namespace sa

@@ -255,6 +255,7 @@ TEST_F(SharedData, FrameFields) {
         {"snail4.dmat", {"snail", 27, 27, 4, false}},
         {"bumpy-cube.dmat", {"bumpy-cube", 22224, 22224, 2, true}},  // binary face-index list
         {"lilium.crossfield", {"lilium", 6590, 323, 2, true}},
+        {"torus_twosings.rawfield", {"torus", 1152, 0, 4, true}},  // Directional, N = 4
     };
     std::map<std::string, Index> faces;
     for (const auto& [name, field] : expected) {

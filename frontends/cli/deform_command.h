@@ -1,0 +1,55 @@
+#pragma once
+// `sa deform` (issue 22), prepared: its arguments and the checks of its options and input
+// files. The command is not registered in sa_main.cpp yet: its solve (Simplex Assembly with
+// E_m = mu |A - A0|^2 to the ARAP start and two barriers, conformal and volumetric, with the
+// optimal-bound loop lowering both) waits for the engine of issue 20.
+//
+//   sa deform --rest FILE [--handles FILE] --targets FILE
+//             [--optimal-bound | --bound-conformal K1 --bound-volumetric K2] --out FILE
+//             [--png FILE] [--report FILE] [--initialization NAME] [--mu M] ...
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "frontends/deform/deform_options.h"
+#include "frontends/deform/handle_targets.h"
+#include "geometry/simplicial_mesh.h"
+
+namespace sa::cli {
+
+struct DeformArguments {
+    std::string rest, handles, targets, out, png, report;
+    std::string bound_conformal = "inf", bound_volumetric = "inf", initialization = "rotation";
+    bool optimal_bound = false;
+    int optimal_bound_rounds = 10;
+    double mu = 1000.0;
+    int start_iterations = 1000;
+    double start_tolerance = 1e-9;
+    double max_time = kInfinity;
+    int threads = 0;
+    bool force = false, quiet = false;
+};
+
+/// Adds the subcommand to `app`; `arguments` is filled when it is parsed.
+CLI::App* add_deform_command(CLI::App& app, DeformArguments& arguments);
+
+/// The options, parsed and validated. Throws InvalidArgumentError naming the option and its
+/// value (a bound that is not a number > 1 or inf, --optimal-bound with a bound, ...).
+DeformOptions deform_options(const DeformArguments& arguments);
+
+/// What the input files hold, checked.
+struct DeformInput {
+    SimplicialMesh mesh;
+    HandleTargets handle_targets;
+    std::vector<std::string> warnings;  ///< notes of the mesh reader
+};
+
+/// Reads and checks the rest mesh (planar triangles or tetrahedra, validated), the handles and
+/// their targets (frontends/deform/handle_targets.h), and refuses outputs that exist unless
+/// --force, or whose format cannot hold the mesh; all before any solve, so that bad input costs
+/// nothing and writes nothing. Throws InputError or InvalidArgumentError, one line naming the
+/// file, line, element or option.
+DeformInput read_deform_input(const DeformArguments& arguments);
+
+}  // namespace sa::cli

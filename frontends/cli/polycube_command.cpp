@@ -1,0 +1,155 @@
+#include "frontends/cli/polycube_command.h"
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "frontends/cli/cli_support.h"
+#include "frontends/cli/map_command.h"
+#include "frontends/output/map_report.h"
+#include "frontends/polycube/polycube_output.h"
+#include "frontends/polycube/polycube_report.h"
+#include "geometry/io/mesh_file.h"
+#include "optim/errors.h"
+
+namespace sa::cli {
+
+namespace {
+
+/// Throws InputError `OPTION PATH: ...` unless `path` is a file that can be opened.
+void check_input_file(const char* option, const std::string& path) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) {
+        throw InputError(std::string(option) + " " + path + ": no such file");
+    }
+    if (!std::ifstream(path)) throw InputError(std::string(option) + " " + path + ": cannot open");
+}
+
+}  // namespace
+
+CLI::App* add_polycube_command(CLI::App& app, PolycubeArguments& a) {
+    CLI::App* polycube = app.add_subcommand(
+        "polycube", "PolyCube map of a tetrahedral mesh (Simplex Assembly, section 5.3)");
+    polycube->add_option("--mesh", a.mesh, "the tetrahedral mesh: .mesh .vtk .vtu .node/.ele")
+        ->required();
+    polycube->add_option(
+        "--labels", a.labels,
+        "the boundary's labels: one per tet facet (.flags, label / 2 = axis; the side is taken "
+        "from the geometry), or one per triangle of --label-surface; computed when absent");
+    polycube->add_option("--label-surface", a.label_surface,
+                         "the boundary surface (.obj) that per-triangle --labels refer to");
+    polycube->add_option("--bound", a.bound, "bound K on the conformal distortion, > 1 or inf")
+        ->capture_default_str();
+    polycube->add_flag("--optimal-bound", a.optimal_bound,
+                       "rounds that take the largest distortion as the next bound (5.1)");
+    polycube
+        ->add_option("--out", a.out,
+                     "the mapped mesh (.mesh); OUT.rest.mesh and OUT.flags are written beside it")
+        ->required();
+    polycube->add_option("--vtu", a.vtu, "the map with per-tet distortion and facet labels");
+    polycube->add_option("--png", a.png,
+                         "a picture of the PolyCube coloured by conformal distortion");
+    polycube->add_option("--report", a.report, "JSON report");
+    polycube->add_option("--max-time", a.max_time, "wall-clock limit on the solve, in seconds");
+    polycube->add_option("--threads", a.threads, "worker threads, 0 = all cores")
+        ->capture_default_str();
+    polycube->add_flag("--force", a.force, "overwrite existing output files");
+    polycube->add_flag("--quiet", a.quiet, "no progress rows on stderr");
+    return polycube;
+}
+
+PolycubePlan check_polycube_arguments(const PolycubeArguments& a) {
+    PolycubePlan plan;
+    plan.mesh = a.mesh;
+    check_input_file("--mesh", a.mesh);
+    if (!a.label_surface.empty() && a.labels.empty()) {
+        throw InvalidArgumentError("--label-surface " + a.label_surface +
+                                   ": needs --labels, one label per triangle of that surface");
+    }
+    if (!a.labels.empty()) {
+        check_input_file("--labels", a.labels);
+        if (a.label_surface.empty()) {
+            plan.labels.flags = a.labels;
+        } else {
+            check_input_file("--label-surface", a.label_surface);
+            plan.labels.labels = a.labels;
+            plan.labels.surface = a.label_surface;
+        }
+    }
+    plan.bound = parse_bound(a.bound);
+    if (a.optimal_bound && std::isfinite(plan.bound)) {
+        throw InvalidArgumentError("--bound " + a.bound +
+                                   " and --optimal-bound: give one or the other");
+    }
+    plan.optimal_bound = a.optimal_bound;
+    if (a.max_time < 0.0 || !std::isfinite(a.max_time)) {
+        throw InvalidArgumentError("--max-time " + std::to_string(a.max_time) +
+                                   ": expected a number of seconds > 0");
+    }
+    plan.max_time = a.max_time > 0.0 ? a.max_time : kInfinity;
+    if (a.threads < 0) {
+        throw InvalidArgumentError("--threads " + std::to_string(a.threads) + ": expected >= 0");
+    }
+    plan.threads = a.threads;
+    plan.quiet = a.quiet;
+
+    if (extension(a.out) != ".mesh") {
+        throw InvalidArgumentError("--out " + a.out + ": the PolyCube map is written as .mesh");
+    }
+    plan.out = a.out;
+    plan.rest = polycube_rest_path(a.out);
+    plan.flags = polycube_flags_path(a.out);
+    if (!a.vtu.empty() && extension(a.vtu) != ".vtu" && extension(a.vtu) != ".vtk") {
+        throw InvalidArgumentError("--vtu " + a.vtu + ": expected a .vtu or .vtk file");
+    }
+    if (!a.png.empty() && extension(a.png) != ".png") {
+        throw InvalidArgumentError("--png " + a.png + ": expected a .png file");
+    }
+    if (!a.report.empty() && extension(a.report) != ".json") {
+        throw InvalidArgumentError("--report " + a.report + ": expected a .json file");
+    }
+    plan.vtu = a.vtu;
+    plan.png = a.png;
+    plan.report = a.report;
+    std::set<std::string> seen;
+    for (const std::string* path :
+         {&plan.out, &plan.rest, &plan.flags, &plan.vtu, &plan.png, &plan.report}) {
+        if (path->empty()) continue;
+        if (!seen.insert(*path).second) {
+            throw InvalidArgumentError(*path + " is named for two outputs");
+        }
+        for (const std::string* input : {&a.mesh, &a.labels, &a.label_surface}) {
+            if (*path == *input) {
+                throw InvalidArgumentError(*path + " is both an input and an output");
+            }
+        }
+        check_writable(*path, a.force);
+    }
+    return plan;
+}
+
+PreparedPolycube read_polycube_input(const PolycubePlan& plan, const Logger& logger) {
+    const MeshFile file = read_mesh_file(plan.mesh);
+    for (const std::string& warning : file.warnings) log_line(logger, "warning: " + warning);
+    return prepare_polycube(file.mesh, plan.mesh, plan.labels, logger);
+}
+
+void write_polycube_outputs(const PolycubePlan& plan, const PreparedPolycube& prepared,
+                            const Eigen::MatrixXd& positions,
+                            const PolycubeVerification& verification, nlohmann::json report) {
+    write_polycube_meshes(plan.out, prepared, positions);
+    if (!plan.vtu.empty()) write_polycube_vtu(plan.vtu, prepared, positions, verification);
+    if (!plan.png.empty()) {
+        write_polycube_png(
+            plan.png, prepared, positions, verification,
+            std::string("PolyCube, ") + (verification.passed ? "verified" : "NOT verified"));
+    }
+    if (!plan.report.empty()) {
+        report["preparation"] = polycube_preparation_json(prepared);
+        report["verification"] = polycube_verification_json(verification);
+        report["outputs"] = {{"mesh", plan.out}, {"rest", plan.rest}, {"flags", plan.flags}};
+        write_json(plan.report, report);
+    }
+}
+
+}  // namespace sa::cli

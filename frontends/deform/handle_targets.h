@@ -1,0 +1,46 @@
+#pragma once
+// Handles and their targets: the input of deformation posing (section 5.4). A user has the rest
+// shape, the handle vertices and where they go, no initial map.
+//
+// Accepted layouts (`handles` an index list as in geometry/io/index_list_io.h, 0-based):
+//   handles + targets            targets is
+//     a mesh file (.node .mesh .obj .off .vtk .vtu .ply .stl, by extension) with one vertex per
+//       rest vertex: its rows at the handles (deform/*_init.node);
+//     rows `index x y z` (`index x y` in 2D) naming exactly the handles, in any order;
+//     rows `x y z` (`x y`): one per rest vertex (its rows at the handles) or one per handle (in
+//       the handle list's order); a file with as many rows as the mesh has vertices is read per
+//       vertex.
+//   targets alone                rows `index x y z`: the indices are the handles, in file order.
+// Row files are read by geometry/io/indexed_positions_io.h (comments, an optional count line,
+// a vertex listed twice at one position kept once, at two positions an error).
+// Positions with more coordinates than the map (a 2D map saved with z = 0) keep the first d;
+// the dropped ones must be zero.
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "optim/types.h"
+
+namespace sa {
+
+struct HandleTargets {
+    std::vector<Index> handles;  ///< distinct vertices, 0-based
+    Eigen::MatrixXd targets;     ///< #handles x d: row k is where handles[k] goes
+};
+
+/// Reads handles and targets for a mesh of `num_vertices` vertices mapped to `dimension` (2 or
+/// 3) coordinates; `handles_path` may be empty (targets alone). Throws InputError with a one-line
+/// message naming the file and, for a row, its line: a handle out of range, listed twice, or
+/// twice with two targets; a target row for a vertex that is not a handle, a handle without a
+/// target; a row count that is neither #V nor #H; no handle at all; non-finite or missing
+/// coordinates.
+HandleTargets read_handle_targets(const std::string& handles_path, const std::string& targets_path,
+                                  Index num_vertices, int dimension);
+
+/// The rest positions (#V x d) with the handles moved to their targets: the start of the
+/// local/global iterations. Throws InvalidArgumentError on inconsistent sizes or an index out of
+/// range.
+Eigen::MatrixXd move_handles(const Eigen::MatrixXd& rest, const HandleTargets& handle_targets);
+
+}  // namespace sa

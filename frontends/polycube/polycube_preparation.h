@@ -1,0 +1,71 @@
+#pragma once
+// The input side of `sa polycube` (issue 21), everything before the solve: a tetrahedral mesh and
+// its boundary labelling (from a .flags file, from per-triangle labels of a boundary surface, or
+// computed by closest axis and cleaned), checked, and the mesh split where planarity would
+// squash it (geometry/polycube_splits.h).
+//
+//   PolycubeLabelInput input;                 // empty: compute the labels
+//   input.flags = "S1.flags";
+//   const PreparedPolycube p = prepare_polycube(mesh, "S1.mesh", input, logger);
+//   // p.mesh: the rest mesh of the map (the input after the splits); p.charts, p.fans, ...
+//
+// Errors (InputError, one line, naming the file and the tetrahedron, facet or chart): a mesh that
+// is not tetrahedral, degenerate rest tetrahedra, labels with a wrong count or out of range,
+// interior facets labelled, boundary facets without a label, a surface that is not the mesh's
+// boundary, a chart that cannot be planar.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "frontends/polycube/polycube_verification.h"
+#include "geometry/polycube_label_cleanup.h"
+#include "geometry/polycube_splits.h"
+#include "geometry/tet_boundary_fans.h"
+#include "optim/logger.h"
+
+namespace sa {
+
+/// Where the labels come from: `flags`, or `labels` with `surface`, or neither (computed).
+struct PolycubeLabelInput {
+    std::string flags;            ///< a .flags file: one label per tet facet
+    std::string labels;           ///< one label per triangle of `surface`
+    std::string surface;          ///< the boundary surface that `labels` refers to
+    LabelCleanupOptions cleanup;  ///< for computed labels
+};
+
+struct PreparedPolycube {
+    SimplicialMesh input;  ///< the mesh as given
+    /// The rest mesh of the map: the input after the splits (its vertices and tetrahedra first,
+    /// in their order; a split tetrahedron's first child keeps its index).
+    SimplicialMesh mesh;
+    std::vector<int> facet_labels;  ///< per tet facet of `mesh`: -1 or 0..5 (+X, -X, ..., -Z)
+    MeshTopology topology;
+    TetBoundary boundary;
+    std::vector<int> labels;  ///< per boundary triangle
+    PolycubeCharts charts;
+    std::vector<BoundaryEdgeFan> fans;
+    std::vector<BoundaryVertexStar> stars;
+    double input_volume = 0.0;
+
+    std::string label_source;  ///< "computed" or the file the labels came from
+    /// File labels: how their parity related to the geometry.
+    std::optional<LabelConvention> convention;
+    /// The parity .flags outputs are written in: the input file's when it followed one
+    /// convention throughout, otherwise even = +axis along the outward normal.
+    FlagSign output_sign = FlagSign::kOutward;
+    std::optional<LabelCleanupReport> cleanup;  ///< computed labels
+    PolycubeSplitReport splits;
+    double read_labels_seconds = 0.0, splits_seconds = 0.0;
+
+    /// Pointers into this object, for verify_polycube().
+    PolycubeLayout layout() const { return {&mesh, &boundary, &charts, &fans, &stars}; }
+    /// The .flags array of `mesh` in output_sign's convention.
+    std::vector<int> output_flags() const;
+};
+
+/// Prepares `mesh` (read from `source`) for a PolyCube map. Progress lines go to `logger`.
+PreparedPolycube prepare_polycube(const SimplicialMesh& mesh, const std::string& source,
+                                  const PolycubeLabelInput& input, const Logger& logger = {});
+
+}  // namespace sa

@@ -1,0 +1,83 @@
+#include "frontends/polycube/polycube_report.h"
+
+#include <cmath>
+
+#include "frontends/output/map_report.h"
+
+namespace sa {
+
+namespace {
+
+/// JSON has no infinity: null instead.
+nlohmann::json finite(double x) {
+    return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json();
+}
+
+nlohmann::json squashed_json(const SquashedElements& s) {
+    return {{"tets", s.tets},
+            {"interior_edges", s.interior_edges},
+            {"boundary_edges", s.boundary_edges},
+            {"boundary_triangles", s.boundary_triangles}};
+}
+
+}  // namespace
+
+nlohmann::json polycube_preparation_json(const PreparedPolycube& p) {
+    nlohmann::json j;
+    j["input"] = {{"vertices", p.input.num_vertices()},
+                  {"tets", p.input.num_simplices()},
+                  {"volume", p.input_volume}};
+    nlohmann::json labels = {{"source", p.label_source},
+                             {"boundary_triangles", p.boundary.size()},
+                             {"charts", p.charts.size()},
+                             {"output_flags", p.output_sign == FlagSign::kOutward
+                                                  ? "even = +axis along the outward normal"
+                                                  : "even = +axis along the inward normal"}};
+    if (p.convention) {
+        labels["convention"] = {{"description", p.convention->describe()},
+                                {"outward", p.convention->outward},
+                                {"inward", p.convention->inward},
+                                {"negative_tets", p.convention->negative_tets}};
+    }
+    if (p.cleanup) {
+        const LabelCleanupReport& c = *p.cleanup;
+        labels["cleanup"] = {{"charts_before", c.charts_before},
+                             {"charts_after", c.charts_after},
+                             {"merged_small", c.merged_small},
+                             {"merged_few_neighbours", c.merged_few_neighbours},
+                             {"merged_opposite", c.merged_opposite},
+                             {"triangles_changed", c.triangles_changed},
+                             {"rounds", c.rounds}};
+    }
+    j["labels"] = labels;
+    j["splits"] = {{"squashed_before", squashed_json(p.splits.before)},
+                   {"squashed_after", squashed_json(p.splits.after)},
+                   {"edge_splits", p.splits.edge_splits},
+                   {"face_splits", p.splits.face_splits},
+                   {"vertices", p.mesh.num_vertices()},
+                   {"tets", p.mesh.num_simplices()}};
+    j["seconds"] = {{"labels", p.read_labels_seconds}, {"splits", p.splits_seconds}};
+    return j;
+}
+
+nlohmann::json polycube_verification_json(const PolycubeVerification& v) {
+    return {{"passed", v.passed},
+            {"failures", v.failures},
+            {"quality", quality_json(v.quality)},
+            {"volume_scale", v.volume_scale},
+            {"planarity",
+             {{"max_spread", v.max_planarity},
+              {"nonplanar_charts", v.nonplanar_charts},
+              {"wrong_side_charts", v.wrong_side_charts}}},
+            {"polycube_edges",
+             {{"count", v.polycube_edges},
+              {"zero_length", v.zero_length_edges},
+              {"shortest", finite(v.shortest_edge)}}},
+            {"angle_sums",
+             {{"edge_violations", v.edge_angle_violations},
+              {"vertex_violations", v.vertex_angle_violations},
+              {"max_edge_over_pi", finite(v.max_edge_angle_sum / M_PI)},
+              {"max_vertex_over_pi", finite(v.max_vertex_angle_sum / M_PI)}}}};
+}
+
+}  // namespace sa

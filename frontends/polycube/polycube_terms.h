@@ -1,0 +1,190 @@
+#pragma once
+// The PolyCube-specific terms of the solve (issue 21), built from a prepared mesh, for the
+// Simplex Assembly engine to add (issue 20): each builder gives the element energies and, per
+// element, the simplices or vertices whose variables it takes, in the order the energy expects.
+// The engine maps them to variable indices (linear_variables(t) is vec(A_t), 9 entries,
+// column-major; vertex v is 3 entries in the vertex stage). Rest frames keep the mesh's axes
+// (geometry/rest_frames.h), so rest edge vectors are coordinate differences.
+//
+//   planarity_elements         Ẽ_assembly, A-form: per labelled boundary triangle, its tet.
+//   planarity_vertex_elements  the same in vertex form: per boundary triangle, its 3 vertices.
+//   sliding_vertices           what each boundary vertex may do: slide on a plane (one axis),
+//                              along a line (two), or stay (a corner: three); with
+//                              energies/polycube_constraints.h's sliding rows.
+//   for_each_dihedral_term     E_e in A-form (tets) and vertex form (p, q, ring), one call per
+//   for_each_solid_angle_term  size present; E_v likewise. The A-form of E_v holds stars of at
+//                              most kMaxAngleFan tetrahedra: larger ones are listed in `skipped`
+//                              (energies/tet_angle_barriers.h says why).
+
+#include <array>
+#include <utility>
+#include <vector>
+
+#include "energies/linear_constraint_energy.h"
+#include "energies/tet_angle_barriers.h"
+#include "frontends/polycube/polycube_preparation.h"
+
+namespace sa {
+
+struct PlanarityElements {
+    std::vector<LinearConstraintRows<9, 2>> rows;  ///< per boundary triangle
+    std::vector<Index> tet;                        ///< its tetrahedron (vec(A) variables)
+};
+PlanarityElements planarity_elements(const PreparedPolycube& prepared);
+
+struct PlanarityVertexElements {
+    std::vector<LinearConstraintRows<9, 2>> rows;
+    std::vector<std::array<Index, 3>> vertices;  ///< per boundary triangle, its vertices
+};
+PlanarityVertexElements planarity_vertex_elements(const PreparedPolycube& prepared);
+
+struct SlidingVertex {
+    Index vertex = -1;
+    std::vector<int> axes;    ///< distinct axes of the charts it lies on, increasing
+    std::vector<int> charts;  ///< those charts
+};
+/// One per boundary vertex, by increasing vertex.
+std::vector<SlidingVertex> sliding_vertices(const PreparedPolycube& prepared);
+
+namespace detail {
+
+/// Calls f(std::integral_constant<int, k>{}) for k in [first, last].
+template <int first, int last, class F>
+void for_sizes(F&& f) {
+    [&]<int... k>(std::integer_sequence<int, k...>) {
+        (f(std::integral_constant<int, first + k>{}), ...);
+    }
+    (std::make_integer_sequence<int, last - first + 1>{});
+}
+
+/// Rest vector from vertex a to b.
+inline Eigen::Vector3d rest(const PreparedPolycube& p, Index a, Index b) {
+    return (p.mesh.vertices.row(b) - p.mesh.vertices.row(a)).transpose();
+}
+
+/// The place of each vertex of `ring` (the position in the vertex-form variables).
+inline int ring_index(const std::vector<Index>& ring, Index v) {
+    return int(std::find(ring.begin(), ring.end(), v) - ring.begin());
+}
+
+}  // namespace detail
+
+/// E_e over every boundary edge. `a_form(DihedralSumEnergy<K>, std::vector<std::array<Index, K>>
+/// tets)` once per fan size K present; `vertex_form(DihedralSumVertexEnergy<M>,
+/// std::vector<std::array<Index, M + 2>> vertices)` (p, q, then the ring) once per ring size M.
+/// Throws InvalidArgumentError for a fan beyond kMaxAngleFan tetrahedra or kMaxAngleRing ring
+/// vertices (none on ../shared/data/polycube: at most 7 and 8).
+template <class AForm, class VertexForm>
+void for_each_dihedral_term(const PreparedPolycube& p, AForm&& a_form, VertexForm&& vertex_form) {
+    for (const BoundaryEdgeFan& fan : p.fans) {
+        if (fan.tets.size() > std::size_t(kMaxAngleFan) || fan.ring.size() > kMaxAngleRing) {
+            throw InvalidArgumentError("boundary edge (" + std::to_string(fan.edge[0]) + ", " +
+                                       std::to_string(fan.edge[1]) + ") has " +
+                                       std::to_string(fan.tets.size()) +
+                                       " tetrahedra; the dihedral-angle barrier takes at most " +
+                                       std::to_string(kMaxAngleFan));
+        }
+    }
+    detail::for_sizes<1, kMaxAngleFan>([&](auto size) {
+        constexpr int K = decltype(size)::value;
+        DihedralSumEnergy<K> energy;
+        std::vector<std::array<Index, K>> tets;
+        for (const BoundaryEdgeFan& fan : p.fans) {
+            if (int(fan.tets.size()) != K) continue;
+            std::array<typename DihedralSumEnergy<K>::Tet, K> element;
+            std::array<Index, K> ids;
+            for (int k = 0; k < K; ++k) {
+                const Index a = fan.edge[0];
+                element[k] = {detail::rest(p, a, fan.edge[1]), detail::rest(p, a, fan.others[k][0]),
+                              detail::rest(p, a, fan.others[k][1])};
+                ids[k] = fan.tets[k];
+            }
+            energy.fans.push_back(element);
+            tets.push_back(ids);
+        }
+        if (!tets.empty()) a_form(std::move(energy), std::move(tets));
+    });
+    detail::for_sizes<2, kMaxAngleRing>([&](auto size) {
+        constexpr int M = decltype(size)::value;
+        DihedralSumVertexEnergy<M> energy;
+        std::vector<std::array<Index, M + 2>> vertices;
+        for (const BoundaryEdgeFan& fan : p.fans) {
+            if (int(fan.ring.size()) != M) continue;
+            std::array<Index, M + 2> ids;
+            ids[0] = fan.edge[0];
+            ids[1] = fan.edge[1];
+            for (int m = 0; m < M; ++m) ids[2 + m] = fan.ring[m];
+            std::vector<std::array<int, 2>> tets;
+            for (const auto& rs : fan.others) {
+                tets.push_back(
+                    {detail::ring_index(fan.ring, rs[0]), detail::ring_index(fan.ring, rs[1])});
+            }
+            energy.tets.push_back(std::move(tets));
+            vertices.push_back(ids);
+        }
+        if (!vertices.empty()) vertex_form(std::move(energy), std::move(vertices));
+    });
+}
+
+/// E_v over every boundary vertex, as for_each_dihedral_term: `a_form(SolidAngleSumEnergy<K>,
+/// std::vector<std::array<Index, K>> tets)` for the stars of at most kMaxAngleFan tetrahedra
+/// (the others are appended to `skipped`, by vertex), `vertex_form(SolidAngleSumVertexEnergy<M>,
+/// std::vector<std::array<Index, M + 1>> vertices)` (v, then the ring) for every star. Throws
+/// InvalidArgumentError for a ring beyond kMaxAngleRing vertices (at most 20 on the data).
+template <class AForm, class VertexForm>
+void for_each_solid_angle_term(const PreparedPolycube& p, AForm&& a_form, VertexForm&& vertex_form,
+                               std::vector<Index>* skipped) {
+    for (const BoundaryVertexStar& star : p.stars) {
+        if (star.ring.size() > kMaxAngleRing) {
+            throw InvalidArgumentError("boundary vertex " + std::to_string(star.vertex) + " has " +
+                                       std::to_string(star.ring.size()) +
+                                       " neighbours; the solid-angle barrier takes at most " +
+                                       std::to_string(kMaxAngleRing));
+        }
+        if (star.tets.size() > std::size_t(kMaxAngleFan) && skipped != nullptr) {
+            skipped->push_back(star.vertex);
+        }
+    }
+    detail::for_sizes<1, kMaxAngleFan>([&](auto size) {
+        constexpr int K = decltype(size)::value;
+        SolidAngleSumEnergy<K> energy;
+        std::vector<std::array<Index, K>> tets;
+        for (const BoundaryVertexStar& star : p.stars) {
+            if (int(star.tets.size()) != K) continue;
+            std::array<typename SolidAngleSumEnergy<K>::Tet, K> element;
+            std::array<Index, K> ids;
+            for (int k = 0; k < K; ++k) {
+                const Index v = star.vertex;
+                element[k] = {detail::rest(p, v, star.others[k][0]),
+                              detail::rest(p, v, star.others[k][1]),
+                              detail::rest(p, v, star.others[k][2])};
+                ids[k] = star.tets[k];
+            }
+            energy.stars.push_back(element);
+            tets.push_back(ids);
+        }
+        if (!tets.empty()) a_form(std::move(energy), std::move(tets));
+    });
+    detail::for_sizes<3, kMaxAngleRing>([&](auto size) {
+        constexpr int M = decltype(size)::value;
+        SolidAngleSumVertexEnergy<M> energy;
+        std::vector<std::array<Index, M + 1>> vertices;
+        for (const BoundaryVertexStar& star : p.stars) {
+            if (int(star.ring.size()) != M) continue;
+            std::array<Index, M + 1> ids;
+            ids[0] = star.vertex;
+            for (int m = 0; m < M; ++m) ids[1 + m] = star.ring[m];
+            std::vector<std::array<int, 3>> tets;
+            for (const auto& abc : star.others) {
+                tets.push_back({detail::ring_index(star.ring, abc[0]),
+                                detail::ring_index(star.ring, abc[1]),
+                                detail::ring_index(star.ring, abc[2])});
+            }
+            energy.tets.push_back(std::move(tets));
+            vertices.push_back(ids);
+        }
+        if (!vertices.empty()) vertex_form(std::move(energy), std::move(vertices));
+    });
+}
+
+}  // namespace sa

@@ -1,0 +1,139 @@
+#include "frontends/cli/polycube_command.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "../geometry/polycube_fixtures.h"
+#include "frontends/polycube/polycube_output.h"
+#include "geometry/cube_cover.h"
+#include "geometry/io/medit_io.h"
+#include "geometry/io/polycube_labels_io.h"
+#include "optim/errors.h"
+
+namespace sa::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+class PolycubeCommand : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("sa_polycube_command_" + std::to_string(getpid()) + "_" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+        const SimplicialMesh mesh = testing::voxel_tetrahedra(testing::l_shape(), 2);
+        write_medit(path("L.mesh"), mesh.vertices, mesh.simplices);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+    /// Parses `args` after `sa polycube` and checks them; the exception's message, or "".
+    std::string check(std::vector<std::string> args, PolycubePlan* plan = nullptr) {
+        CLI::App app;
+        PolycubeArguments arguments;
+        add_polycube_command(app, arguments);
+        args.insert(args.begin(), "polycube");
+        std::reverse(args.begin(), args.end());  // CLI11 takes them last first
+        try {
+            app.parse(args);
+            const PolycubePlan p = check_polycube_arguments(arguments);
+            if (plan != nullptr) *plan = p;
+        } catch (const CLI::ParseError& e) {
+            return std::string("parse: ") + e.what();
+        } catch (const Error& e) {
+            return e.what();
+        }
+        return "";
+    }
+    fs::path dir_;
+};
+
+TEST_F(PolycubeCommand, ArgumentsAreChecked) {
+    PolycubePlan plan;
+    EXPECT_EQ(check({"--mesh", path("L.mesh"), "--out", path("out.mesh"), "--bound", "3", "--png",
+                     path("p.png"), "--report", path("r.json"), "--max-time", "20"},
+                    &plan),
+              "");
+    EXPECT_EQ(plan.bound, 3.0);
+    EXPECT_EQ(plan.rest, path("out.rest.mesh"));
+    EXPECT_EQ(plan.flags, path("out.flags"));
+    EXPECT_EQ(plan.max_time, 20.0);
+    EXPECT_TRUE(plan.labels.flags.empty() && plan.labels.labels.empty());
+
+    std::ofstream(path("L.flags")) << "0\n";
+    std::ofstream(path("l.txt")) << "0\n";
+    std::ofstream(path("b.obj")) << "v 0 0 0\n";
+    EXPECT_EQ(
+        check({"--mesh", path("L.mesh"), "--labels", path("L.flags"), "--out", path("o.mesh")},
+              &plan),
+        "");
+    EXPECT_EQ(plan.labels.flags, path("L.flags"));
+    EXPECT_EQ(check({"--mesh", path("L.mesh"), "--labels", path("l.txt"), "--label-surface",
+                     path("b.obj"), "--out", path("o.mesh"), "--optimal-bound"},
+                    &plan),
+              "");
+    EXPECT_EQ(plan.labels.labels, path("l.txt"));
+    EXPECT_EQ(plan.labels.surface, path("b.obj"));
+    EXPECT_TRUE(plan.optimal_bound);
+
+    auto fails = [&](std::vector<std::string> args, const std::string& part) {
+        const std::string message = check(std::move(args));
+        EXPECT_NE(message.find(part), std::string::npos) << message;
+    };
+    fails({"--mesh", path("none.mesh"), "--out", path("o.mesh")}, "--mesh " + path("none.mesh"));
+    fails({"--mesh", path("L.mesh"), "--out", path("o.vtu")}, "written as .mesh");
+    fails({"--mesh", path("L.mesh"), "--out", path("o.mesh"), "--bound", "3", "--optimal-bound"},
+          "one or the other");
+    fails({"--mesh", path("L.mesh"), "--out", path("o.mesh"), "--bound", "0.5"}, "--bound 0.5");
+    fails({"--mesh", path("L.mesh"), "--label-surface", path("b.obj"), "--out", path("o.mesh")},
+          "needs --labels");
+    fails({"--mesh", path("L.mesh"), "--out", path("o.mesh"), "--png", path("p.jpg")}, ".png");
+    fails({"--mesh", path("L.mesh"), "--out", path("o.mesh"), "--max-time", "-1"}, "--max-time");
+    fails({"--mesh", path("L.mesh"), "--out", path("o.mesh"), "--report", path("o.flags")},
+          ".json");
+    fails({"--mesh", path("L.mesh"), "--out", path("L.mesh")}, "both an input and an output");
+    fails({"--out", path("o.mesh")}, "parse:");
+    std::ofstream(path("o.rest.mesh")) << "";
+    fails({"--mesh", path("L.mesh"), "--out", path("o.mesh")}, "exists; pass --force");
+    EXPECT_EQ(check({"--mesh", path("L.mesh"), "--out", path("o.mesh"), "--force"}), "");
+}
+
+// The steps around the solve, on the cube-cover start of a generated L (itself a PolyCube, so
+// the start is the identity and verified): every output is written and reads back.
+TEST_F(PolycubeCommand, InputAndOutputsAroundTheSolve) {
+    PolycubePlan plan;
+    ASSERT_EQ(check({"--mesh", path("L.mesh"), "--out", path("o.mesh"), "--vtu", path("o.vtu"),
+                     "--report", path("o.json")},
+                    &plan),
+              "");
+    std::vector<std::string> lines;
+    const PreparedPolycube prepared =
+        read_polycube_input(plan, [&](const std::string& l) { lines.push_back(l); });
+    EXPECT_EQ(lines.size(), 2u);
+    const Eigen::MatrixXd start =
+        cube_cover_map(prepared.mesh, prepared.boundary, prepared.charts).positions;
+    const PolycubeVerification v = verify_polycube(prepared.layout(), start, prepared.input_volume);
+    EXPECT_TRUE(v.passed);
+    write_polycube_outputs(plan, prepared, start, v, {{"command", "test"}});
+    for (const char* name : {"o.mesh", "o.rest.mesh", "o.flags", "o.vtu", "o.json"}) {
+        EXPECT_TRUE(fs::exists(path(name))) << name;
+    }
+    EXPECT_EQ(read_facet_flags(path("o.flags"), prepared.mesh.num_simplices()),
+              prepared.output_flags());
+    std::ifstream in(path("o.json"));
+    const nlohmann::json report = nlohmann::json::parse(in);
+    EXPECT_EQ(report["command"], "test");
+    EXPECT_EQ(report["preparation"]["labels"]["charts"], 8);
+    EXPECT_EQ(report["preparation"]["labels"]["source"], "computed");
+    EXPECT_EQ(report["verification"]["passed"], true);
+    EXPECT_EQ(report["verification"]["quality"]["inverted"], 0);
+    EXPECT_EQ(report["outputs"]["flags"], path("o.flags"));
+}
+
+}  // namespace
+}  // namespace sa::cli

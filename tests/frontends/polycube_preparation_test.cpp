@@ -1,0 +1,156 @@
+#include "frontends/polycube/polycube_preparation.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+#include "../geometry/polycube_fixtures.h"
+#include "frontends/polycube/polycube_output.h"
+#include "geometry/io/medit_io.h"
+#include "geometry/io/obj_io.h"
+#include "geometry/io/polycube_labels_io.h"
+#include "geometry/io/vtk_io.h"
+#include "optim/errors.h"
+
+namespace sa {
+namespace {
+
+namespace fs = std::filesystem;
+
+class PolycubePreparation : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("sa_polycube_" + std::to_string(getpid()) + "_" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+    fs::path dir_;
+};
+
+std::string message(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST_F(PolycubePreparation, ComputedLabels) {
+    const SimplicialMesh mesh =
+        testing::bent(testing::voxel_tetrahedra(testing::l_shape(), 3), 0.02);
+    std::vector<std::string> lines;
+    const PreparedPolycube p =
+        prepare_polycube(mesh, "L", {}, [&](const std::string& l) { lines.push_back(l); });
+    EXPECT_EQ(p.label_source, "computed");
+    ASSERT_TRUE(p.cleanup.has_value());
+    EXPECT_TRUE(p.cleanup->clean);
+    EXPECT_FALSE(p.convention.has_value());
+    EXPECT_EQ(p.output_sign, FlagSign::kOutward);
+    EXPECT_EQ(p.charts.size(), 8);
+    EXPECT_EQ(p.splits.before.total(), 0);
+    EXPECT_EQ(p.mesh.simplices, mesh.simplices);
+    EXPECT_EQ(p.fans.size(), p.boundary.edges.size());
+    EXPECT_GT(p.stars.size(), 0u);
+    EXPECT_NEAR(p.input_volume, tet_mesh_volume(mesh, mesh.vertices), 1e-15);
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_NE(lines[0].find("labels by closest axis, 8 charts"), std::string::npos) << lines[0];
+    EXPECT_NE(lines[1].find("8 charts; squashed: 0 tetrahedra"), std::string::npos) << lines[1];
+}
+
+TEST_F(PolycubePreparation, FlagsInTheirOwnConventionAreWrittenBackInIt) {
+    const SimplicialMesh mesh = testing::voxel_tetrahedra(testing::l_shape(), 2);
+    const PreparedPolycube computed = prepare_polycube(mesh, "L", {});
+    std::vector<int> inward = computed.output_flags();
+    for (int& f : inward) {
+        if (f >= 0) f ^= 1;
+    }
+    write_facet_flags(path("L.flags"), inward);
+    PolycubeLabelInput input;
+    input.flags = path("L.flags");
+    const PreparedPolycube p = prepare_polycube(mesh, "L", input);
+    EXPECT_EQ(p.labels, computed.labels);
+    ASSERT_TRUE(p.convention.has_value());
+    EXPECT_EQ(p.convention->inward, p.boundary.size());
+    EXPECT_EQ(p.output_sign, FlagSign::kInward);
+    EXPECT_EQ(p.output_flags(), inward);
+    EXPECT_EQ(p.label_source, path("L.flags"));
+}
+
+TEST_F(PolycubePreparation, SurfaceLabelsTransfer) {
+    const SimplicialMesh mesh = testing::voxel_tetrahedra(testing::l_shape(), 2);
+    const PreparedPolycube computed = prepare_polycube(mesh, "L", {});
+    write_obj(path("boundary.obj"), mesh.vertices, computed.boundary.triangles);
+    std::string labels;
+    for (const int l : computed.labels) labels += std::to_string(l) + "\n";
+    std::ofstream(path("labeling.txt")) << labels;
+    PolycubeLabelInput input;
+    input.labels = path("labeling.txt");
+    input.surface = path("boundary.obj");
+    const PreparedPolycube p = prepare_polycube(mesh, "L", input);
+    EXPECT_EQ(p.labels, computed.labels);
+    EXPECT_EQ(p.output_sign, FlagSign::kOutward);
+}
+
+TEST_F(PolycubePreparation, BadInputIsRejectedInOneLine) {
+    const SimplicialMesh mesh = testing::voxel_tetrahedra({{0, 0, 0}}, 1);
+    PolycubeLabelInput half;
+    half.labels = path("labeling.txt");
+    EXPECT_NE(message([&] { prepare_polycube(mesh, "cube", half); }).find("need both"),
+              std::string::npos);
+    SimplicialMesh triangles;
+    triangles.vertices = mesh.vertices;
+    triangles.simplices = Eigen::MatrixXi(1, 3);
+    triangles.simplices << 0, 1, 2;
+    EXPECT_NE(message([&] {
+                  prepare_polycube(triangles, "t.obj", {});
+              }).find("t.obj: a PolyCube map needs a tetrahedral mesh"),
+              std::string::npos);
+    std::ofstream(path("short.flags")) << "0 1 2\n";
+    PolycubeLabelInput short_flags;
+    short_flags.flags = path("short.flags");
+    const std::string text = message([&] { prepare_polycube(mesh, "cube", short_flags); });
+    EXPECT_NE(text.find("short.flags: 3 labels, expected 24"), std::string::npos) << text;
+    EXPECT_EQ(text.find('\n'), std::string::npos);
+    // Every boundary facet +X: one chart that cannot be planar.
+    std::vector<int> all_x(24, -1);
+    const TetBoundary boundary = tet_boundary(mesh, mesh_topology(mesh, "cube"));
+    for (Index b = 0; b < boundary.size(); ++b) all_x[boundary.tet_facet[b]] = 0;
+    write_facet_flags(path("x.flags"), all_x);
+    PolycubeLabelInput x;
+    x.flags = path("x.flags");
+    EXPECT_NE(message([&] { prepare_polycube(mesh, "cube", x); }).find("cannot be planar"),
+              std::string::npos);
+}
+
+TEST_F(PolycubePreparation, OutputsReadBack) {
+    const SimplicialMesh mesh = testing::voxel_tetrahedra(testing::l_shape(), 2);
+    const PreparedPolycube p = prepare_polycube(mesh, "L", {});
+    Eigen::MatrixXd mapped = 2.0 * p.mesh.vertices;
+    const PolycubeVerification v = verify_polycube(p.layout(), mapped, p.input_volume);
+    ASSERT_TRUE(v.passed);
+    const std::string out = path("L.mesh");
+    EXPECT_EQ(polycube_rest_path(out), path("L.rest.mesh"));
+    EXPECT_EQ(polycube_flags_path(out), path("L.flags"));
+    EXPECT_THROW(polycube_rest_path(path("L.vtu")), InvalidArgumentError);
+    write_polycube_meshes(out, p, mapped);
+    const MeshFile map = read_medit(out), rest = read_medit(path("L.rest.mesh"));
+    EXPECT_EQ(map.mesh.simplices, p.mesh.simplices);
+    EXPECT_EQ(rest.mesh.simplices, p.mesh.simplices);
+    EXPECT_TRUE(map.mesh.vertices.isApprox(mapped, 1e-15));
+    EXPECT_TRUE(rest.mesh.vertices.isApprox(p.mesh.vertices, 1e-15));
+    EXPECT_EQ(read_facet_flags(path("L.flags"), p.mesh.num_simplices()), p.output_flags());
+    write_polycube_vtu(path("L.vtu"), p, mapped, v);
+    const MeshFile vtu = read_vtu(path("L.vtu"));
+    EXPECT_EQ(vtu.mesh.num_simplices(), p.mesh.num_simplices());
+}
+
+}  // namespace
+}  // namespace sa

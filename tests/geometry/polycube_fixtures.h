@@ -1,0 +1,83 @@
+#pragma once
+// Generated tetrahedral meshes with PolyCube-like shapes, for the PolyCube tests.
+
+#include <Eigen/Geometry>
+#include <array>
+#include <map>
+#include <random>
+#include <vector>
+
+#include "geometry/simplicial_mesh.h"
+
+namespace sa::testing {
+
+using Cell = std::array<int, 3>;
+
+/// The union of the unit cubes with lower corners `cells`, each cut into n^3 cubes of six
+/// positively oriented Kuhn tetrahedra (conforming across cubes), sharing vertices.
+inline SimplicialMesh voxel_tetrahedra(const std::vector<Cell>& cells, int n = 1) {
+    std::map<Cell, Index> index;
+    std::vector<Eigen::Vector3d> points;
+    auto vertex = [&](const Cell& p) {
+        const auto [it, inserted] = index.emplace(p, Index(points.size()));
+        if (inserted) points.emplace_back(p[0] / double(n), p[1] / double(n), p[2] / double(n));
+        return it->second;
+    };
+    const std::array<std::array<int, 3>, 6> orders = {
+        {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
+    std::vector<std::array<Index, 4>> tets;
+    for (const Cell& cell : cells) {
+        for (int a = 0; a < n; ++a) {
+            for (int b = 0; b < n; ++b) {
+                for (int c = 0; c < n; ++c) {
+                    for (const auto& order : orders) {
+                        Cell p = {cell[0] * n + a, cell[1] * n + b, cell[2] * n + c};
+                        std::array<Index, 4> tet{};
+                        tet[0] = vertex(p);
+                        for (int step = 0; step < 3; ++step) {
+                            ++p[order[step]];
+                            tet[step + 1] = vertex(p);
+                        }
+                        Eigen::Matrix3d e;
+                        for (int k = 0; k < 3; ++k) e.col(k) = points[tet[k + 1]] - points[tet[0]];
+                        if (e.determinant() < 0) std::swap(tet[1], tet[2]);
+                        tets.push_back(tet);
+                    }
+                }
+            }
+        }
+    }
+    SimplicialMesh mesh;
+    mesh.vertices.resize(Index(points.size()), 3);
+    for (std::size_t v = 0; v < points.size(); ++v) mesh.vertices.row(Index(v)) = points[v];
+    mesh.simplices.resize(Index(tets.size()), 4);
+    for (std::size_t t = 0; t < tets.size(); ++t) {
+        for (int k = 0; k < 4; ++k) mesh.simplices(Index(t), k) = tets[t][k];
+    }
+    return mesh;
+}
+
+/// An L-shaped block of three unit cubes.
+inline std::vector<Cell> l_shape() {
+    return {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+}
+
+/// A smooth deformation that keeps every face of a voxel shape closest to its own axis: each
+/// coordinate bent by a small sine of the others.
+inline SimplicialMesh bent(SimplicialMesh mesh, double amplitude) {
+    for (Index v = 0; v < mesh.num_vertices(); ++v) {
+        const Eigen::Vector3d p = mesh.vertices.row(v).transpose();
+        mesh.vertices(v, 0) += amplitude * std::sin(1.3 * p.y() + 0.7 * p.z());
+        mesh.vertices(v, 1) += amplitude * std::sin(0.9 * p.z() + 1.1 * p.x());
+        mesh.vertices(v, 2) += amplitude * std::sin(1.2 * p.x() + 0.8 * p.y());
+    }
+    return mesh;
+}
+
+/// The same tetrahedra with two vertices of every tetrahedron swapped: all negatively oriented.
+inline SimplicialMesh reversed(SimplicialMesh mesh) {
+    mesh.simplices.col(1).swap(mesh.simplices.col(2));
+    return mesh;
+}
+
+}  // namespace sa::testing
