@@ -14,11 +14,14 @@
 #include "geometry/io/dmat_io.h"
 #include "geometry/io/frame_field_io.h"
 #include "geometry/io/index_list_io.h"
+#include "geometry/io/indexed_positions_io.h"
 #include "geometry/io/medit_io.h"
 #include "geometry/io/obj_io.h"
 #include "geometry/io/off_io.h"
 #include "geometry/io/openmesh_io.h"
+#include "geometry/io/polycube_labels_io.h"
 #include "geometry/io/problem_io.h"
+#include "geometry/io/rawfield_io.h"
 #include "geometry/io/tetgen_io.h"
 #include "geometry/io/vtk_io.h"
 #include "geometry/mesh_generators.h"
@@ -278,6 +281,50 @@ std::vector<Bytes> seeds_frame_field() {
             with_trailer(dmat(dense), {4, 1}), with_trailer(joined(dmat(b), dmat(bc)), {4, 2})};
 }
 
+void run_rawfield(const std::uint8_t* data, std::size_t size) {
+    if (size < 1) return;
+    read_rawfield(write("field.rawfield", data, size - 1), data[size - 1]);
+}
+std::vector<Bytes> seeds_rawfield() {
+    const Bytes field = bytes(
+        "4 3\n1 0 0 0 1 0 -1 0 0 0 -1 0\n0 0 0 0 0 0 0 0 0 0 0 0\n"
+        "0.5 0.5 0 -2 2 0 -0.5 -0.5 0 2 -2 0\n");
+    return {with_trailer(field, {3}), with_trailer(with_crlf(field), {3}),
+            with_trailer(bytes("4 1\n0 1e-3 0 1 0 0 0 -1e-3 0 -1 0 0\n"), {1})};
+}
+
+void run_indexed_positions(const std::uint8_t* data, std::size_t size) {
+    if (size < 1) return;
+    // The last byte: its low bit the dimension (2 or 3), the rest the vertex count plus one (0:
+    // no range check).
+    const std::uint8_t b = data[size - 1];
+    read_position_rows(write("targets.txt", data, size - 1), 2 + (b & 1), Index(b >> 1) - 1);
+}
+std::vector<Bytes> seeds_indexed_positions() {
+    return {with_trailer(bytes("2\n0 0.5 0.5 0\n3 1 2 3 # moved\n"), {1 + 2 * 5}),
+            with_trailer(bytes("0 1 1\r\n4 -1 2.5e3\r\n0 1 1\r\n"), {0 + 2 * 9}),
+            with_trailer(bytes("# plain\n0 0\n1 0\n0 1\n"), {0}),
+            with_trailer(bytes("1 2 3\n4 5 6\n"), {1})};
+}
+
+void run_polycube_labels(const std::uint8_t* data, std::size_t size) {
+    if (size < 2) return;
+    // The last two bytes: the element count, then the reader (even: .flags, odd: labeling.txt).
+    const Index count = data[size - 2];
+    const std::string path = write("labels.txt", data, size - 2);
+    if (data[size - 1] % 2 == 0)
+        read_facet_flags(path, count);
+    else
+        read_triangle_labels(path, count);
+}
+std::vector<Bytes> seeds_polycube_labels() {
+    const Bytes flags = written("a.flags", [](const std::string& p) {
+        write_facet_flags(p, {-1, 0, 2, 5, 1, -1, -1, 4});
+    });
+    return {with_trailer(flags, {2, 0}), with_trailer(bytes("0 1 2 3\n4 5\r\n"), {6, 1}),
+            with_trailer(bytes("-1 -1 -1 3\n"), {1, 0})};
+}
+
 void run_index_list(const std::uint8_t* data, std::size_t size) {
     read_index_list(write("handles.txt", data, size));
 }
@@ -344,9 +391,11 @@ const std::vector<Target>& targets() {
         {"vtk", run_vtk, seeds_vtk},
         {"dmat", run_dmat, seeds_dmat},
         {"frame_field", run_frame_field, seeds_frame_field},
-        // rawfield: the .rawfield reader (issue 19) gets its target here.
+        {"rawfield", run_rawfield, seeds_rawfield},
         {"index_list", run_index_list, seeds_index_list},
         {"ply_stl", run_ply_stl, seeds_ply_stl},
+        {"indexed_positions", run_indexed_positions, seeds_indexed_positions},
+        {"polycube_labels", run_polycube_labels, seeds_polycube_labels},
     };
     return all;
 }

@@ -15,8 +15,12 @@
 //   frame_field   the file; then a byte, the mesh's face count; then a byte, the reader: 0 a
 //                 .crossfield, 1 a .dmat (read_frame_field), 2 libigl's pair b.dmat NUL bc.dmat
 //   ply_stl       the file; then a byte: even a .ply, odd a .stl
-//   rawfield      (the .rawfield reader is being added in geometry/io by issue 19: its target
-//                 goes here, laid out as frame_field)
+//   rawfield      the file; then a byte, the mesh's face count
+//   indexed_positions  the file; then a byte b: dimension 2 + (b & 1), vertex count (b >> 1) - 1
+//                 (-1: no range check)
+//   polycube_labels  the file; then a byte, the element count (tetrahedra or triangles); then a
+//                 byte: even a .flags file (read_facet_flags), odd a labeling.txt
+//                 (read_triangle_labels)
 
 #include <cstddef>
 #include <cstdint>

@@ -106,7 +106,13 @@ TEST(OpenMeshIo, RefusedFacesAndBadFilesAreErrorsAndNothingIsPrinted) {
                                    {"garbage.ply:1: not a PLY file: expected 'ply', found "
                                     "'this is not a ply file'"}));
     EXPECT_TRUE(throws_input_error(read("header.ply", "ply\nformat nonsense\n"),
+                                   {"header.ply: the PLY header has no 'end_header' line"}));
+    EXPECT_TRUE(throws_input_error(read("header.ply", "ply\nformat nonsense\nend_header\n"),
                                    {"header.ply:", "cannot read as PLY"}));
+    // A property before any element made OpenMesh's reader write through a missing element.
+    EXPECT_TRUE(throws_input_error(
+        read("order.ply", "ply\nformat ascii 1.0\nproperty float x\nend_header\n"),
+        {"order.ply:3: a PLY property before any element"}));
     EXPECT_TRUE(throws_input_error(
         [&] { read_stl(folder.write("text.stl", "hello\n")); },
         {"text.stl: not an STL file: neither ASCII ('solid' on line 1, found 'hello')"}));
