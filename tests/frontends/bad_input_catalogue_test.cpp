@@ -652,6 +652,19 @@ std::vector<Case> catalogue() {
          "param --mesh {D}/p.ply --out {D}/uv.obj",
          2,
          {"{D}/p.ply: face 0 with 4 vertices"}},
+        {"PlyPropertyBeforeElement",
+         [](const Inputs& in) {
+             in.text("p.ply",
+                     "ply\nformat ascii 1.0\nelemXnt vertex 3\nproperty float x\nend_header\n");
+         },
+         "param --mesh {D}/p.ply --out {D}/uv.obj",
+         2,
+         {"{D}/p.ply:3: not a PLY header line: 'elemXnt'"}},
+        {"PlyNoEndHeader",
+         [](const Inputs& in) { in.text("p.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"); },
+         "param --mesh {D}/p.ply --out {D}/uv.obj",
+         2,
+         {"{D}/p.ply: the PLY header has no 'end_header' line"}},
         {"StlNotStl",
          [](const Inputs& in) { in.text("s.stl", "hello\n"); },
          "param --mesh {D}/s.stl --out {D}/uv.obj",
@@ -697,8 +710,62 @@ std::vector<Case> catalogue() {
          "--out {D}/s.obj",
          2,
          {"give --field or --constraints, not both"}},
-        // rawfield: the .rawfield reader is being added in geometry/io (issue 19); its cases go
-        // here, as those of .crossfield.
+        {"RawfieldNotAFrameField",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.text("f.rawfield", "2 72\n");
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.rawfield --out {D}/s.obj",
+         2,
+         {"{D}/f.rawfield:1: N = 2 vectors per face"}},
+        {"RawfieldWrongFaceCount",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.text("f.rawfield", "4 5\n");
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.rawfield --out {D}/s.obj",
+         2,
+         {"{D}/f.rawfield:1: header gives 5 faces; expected 72"}},
+        {"RawfieldShortRow",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.text("f.rawfield", "4 72\n1 0 0 0 1 0\n");
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.rawfield --out {D}/s.obj",
+         2,
+         {"{D}/f.rawfield:2: face 0: expected 12 numbers", "found 6"}},
+        {"RawfieldNotSymmetric",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.text("f.rawfield", "4 72\n1 0 0 0 1 0 1 0 0 0 -1 0\n");
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.rawfield --out {D}/s.obj",
+         2,
+         {"{D}/f.rawfield:2: face 0: the third and fourth vectors are not -u and -v"}},
+        {"RawfieldEndsEarly",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.text("f.rawfield", "4 72\n1 0 0 0 1 0 -1 0 0 0 -1 0\n");
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.rawfield --out {D}/s.obj",
+         2,
+         {"{D}/f.rawfield: file ends after 1 of 72 faces"}},
+        {"RawfieldNotANumber",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.text("f.rawfield", "4 72\n1 0 0 0 1 0 -1 0 0 0 -1 zero\n");
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.rawfield --out {D}/s.obj",
+         2,
+         {"{D}/f.rawfield:2:", "zero"}},
+        {"RawfieldGzip",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.text("f.rawfield", kGzip);
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.rawfield --out {D}/s.obj",
+         2,
+         {"{D}/f.rawfield:1: not a text file"}},
 
         // Meshes the commands cannot take, named by their file.
         {"ParamNotADisk",
