@@ -8,7 +8,7 @@
 //   bench_deform_start --rest R --targets T [--handles H] [--name NAME]
 //   bench_deform_start --bar bend|twist|translate
 //   ... [--png FILE] [--start-iterations N] [--anderson M] [--verbose] [--start-tolerance E]
-//   [--threads N]
+//   [--threads N] [--rest-start]
 #include <tbb/global_control.h>
 
 #include <CLI/CLI.hpp>
@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
     CLI::App app{"The ARAP start of deformation posing, measured"};
     std::string rest, handles, targets, bar, name, png;
     int iterations = 1000, threads = 0, anderson = sa::ArapOptions{}.anderson_history;
-    bool verbose = false;
+    bool verbose = false, rest_start = false;
     double tolerance = 1e-9;
     app.add_option("--rest", rest, "rest mesh");
     app.add_option("--handles", handles, "handle list");
@@ -41,6 +41,8 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--png", png, "a picture of the start (frontends/output/pose_picture.h)");
     app.add_flag("--verbose", verbose, "progress rows on stderr");
+    app.add_flag("--rest-start", rest_start,
+                 "start from the rest shape with the handles moved, not from the handle rotations");
     CLI11_PARSE(app, argc, argv);
     std::unique_ptr<tbb::global_control> control;
     if (threads > 0) {
@@ -72,6 +74,7 @@ int main(int argc, char** argv) {
         options.max_iterations = iterations;
         options.tolerance = tolerance;
         options.anderson_history = anderson;
+        options.rotation_start = !rest_start;
         sa::Logger logger;
         if (verbose) logger = [](const std::string& line) { std::cerr << line << '\n'; };
         const sa::DeformStart start = sa::deform_start(mesh, handle_targets, options, logger);
@@ -89,13 +92,14 @@ int main(int argc, char** argv) {
             "\"inverted\": %ld, \"inverted_on_boundary\": %ld, \"degenerate\": %ld, "
             "\"isometric\": [%.6g, %.6g], \"conformal\": [%.6g, %.6g], \"volumetric\": [%.6g, "
             "%.6g], \"iterations\": %d, \"rejected\": %d, \"stop\": \"%s\", \"Q\": [%.6g, %.6g], "
-            "\"start_seconds\": %.4f, \"iteration_seconds\": %.4f, \"read_seconds\": %.3f}\n",
+            "\"start\": \"%s\", \"start_seconds\": %.4f, \"iteration_seconds\": %.4f, "
+            "\"read_seconds\": %.3f}\n",
             name.c_str(), long(mesh.num_vertices()), long(mesh.num_simplices()),
             long(handle_targets.handles.size()), long(q.inverted), visible, long(q.degenerate),
             q.isometric.max, q.isometric.mean, q.conformal.max, q.conformal.mean, q.volumetric.max,
             q.volumetric.mean, start.arap.iterations, start.arap.rejected, start.arap.stop.c_str(),
-            start.arap.initial_energy, start.arap.energy, start.seconds, start.arap.seconds,
-            read_seconds);
+            start.arap.initial_energy, start.arap.energy, start.arap.start.c_str(), start.seconds,
+            start.arap.seconds, read_seconds);
     } catch (const sa::Error& e) {
         std::cerr << "error: " << e.what() << '\n';
         return 2;

@@ -4,19 +4,21 @@ checker ../shared/tools/check_map.py --uv, and prints a markdown table: faces, f
 initial map and after, delta_con max / mean (from the checker), the bound reached by
 --optimal-bound, wall time and peak memory.
 
-With --large, also the million-face case of issue 5: camelhead.off Loop-subdivided 3 times
-(`sa subdivide`, 1.45M faces), parameterized from LSCM with E_m = LSCM and K^conf = 1.45
-(delta_con <= 2.5) as in the paper's Figure 11, with the time of each stage.
+With --large, also the subdivided cases of issue 24 (LARGE_CASES: camel_b.obj Loop-subdivided 4
+and 5 times, 0.92M and 3.7M faces, from LSCM with E_m = LSCM and K^conf = 1.45 (delta_con <= 2.5)
+as in the paper's Figure 11; camelhead.off and face.obj subdivided 3 times with --optimal-bound),
+each mesh built by `sa subdivide` and deleted after its run, with a table of the time of each
+stage, peak memory and bytes per face. --large-only skips the table of the shared meshes.
 
 With --robustness, instead: golf.obj (OptCuts) and generated disks of its class (flat closed
 surfaces with a one-vertex hole and sliver triangles), from LSCM and from Tutte, with and without
 the fallback to a Tutte start (frontends/param/start_fallback.h); --write puts that table between
 <!-- param-robustness:begin --> and <!-- param-robustness:end -->.
 
-  python3 bench/param_benchmarks.py [--large] [--robustness] [--only NAME] [--timeout 600] [--write BENCHMARKS.md]
+  python3 bench/param_benchmarks.py [--large] [--large-only] [--robustness] [--only NAME] [--timeout 600] [--write BENCHMARKS.md]
 
 With --write, the tables replace the section between <!-- param-benchmarks:begin --> and
-<!-- param-benchmarks:end --> of that file. Extra arguments after -- go to every `sa param` run.
+<!-- param-benchmarks:end --> of that file (<!-- param-large:... --> with --large-only). Extra arguments after -- go to every `sa param` run.
 """
 import argparse
 import math
@@ -77,28 +79,61 @@ def table(rows):
     return '\n'.join(lines) + '\n'
 
 
+# The cases of --large (issue 24): (name, mesh in ../shared/data/param, Loop levels, sa param
+# arguments). camel_b's LSCM map folds (9 triangles at the base, more after subdivision), so its
+# submesh runs have regions to repair; camelhead's and face's test the optimal bound at scale.
+LARGE_CASES = [
+    ('camel_b x256', 'camel_b.obj', 4, ['--energy', 'lscm', '--bound', '1.45']),
+    ('camel_b x1024', 'camel_b.obj', 5, ['--energy', 'lscm', '--bound', '1.45']),
+    ('camelhead x64', 'camelhead.off', 3, ['--optimal-bound']),
+    ('face x64', 'face.obj', 3, ['--optimal-bound']),
+]
+
+
+def stage_row(name, row, rep, subdivide_wall):
+    """One line of the stage table: seconds per stage from sa's report, peak memory, bytes per
+    face. Stages of an --optimal-bound run are those of its last round (rounds' total in 'solve')."""
+    if rep is None:
+        return '| %s | %s |' % (name, row['status']) + ' |' * 16
+    t, pt, m = rep['times'], rep['parameterization']['times'], rep.get('submesh', {})
+    mt = m.get('times', {})
+    peak = rep['parameterization']['peak_memory_gb']
+    cells = [pt['read'], pt['initial_map'], t['disassembly'], t['setup'] - t['disassembly'],
+             mt.get('start', 0.0), mt.get('solves', 0.0) + mt.get('regions', 0.0), t['recovery'],
+             t['vertex_stage'], t['verification'], pt['solve'], pt['output'], pt['total']]
+    return '| %s | %s | %s | %s | %s | %.2f | %.0f |' % (
+        name, fmt(subdivide_wall, 3), ' | '.join('%.2f' % c for c in cells),
+        '%s / %s' % (m.get('start_bad', '-'), m.get('solves', '-')),
+        '%s' % row['status'], peak, peak * 2**30 / max(1, row.get('faces', 1)))
+
+
 def large_case(a, work):
-    mesh = os.path.join(work, 'camelhead-x64.obj')
-    source = os.path.join(a.data, 'param', 'camelhead.off')
-    s = run_measured([a.sa, 'subdivide', '--mesh', source, '--levels', '3', '--out', mesh, '--force'],
-                     a.timeout)
-    if s is None or s['code'] != 0:
-        return 'subdivision failed: %s\n' % (s and s['err'])
-    args = ['--energy', 'lscm', '--bound', '1.45']
-    row, rep = run_param(a, mesh, args, work, 'camelhead, Loop-subdivided 3 times')
-    text = ('`sa subdivide --mesh camelhead.off --levels 3` (%.1f s), then `sa param %s`:\n\n%s\n' %
-            (s['wall'], ' '.join(args), table([row])))
-    if rep is not None:
-        t, pt, m = rep['times'], rep['parameterization']['times'], rep.get('submesh', {})
-        mt = m.get('times', {})
-        text += ('Stages (s): read %.2f, initial map (LSCM) %.2f, disassembly %.2f, other setup %.2f, '
-                 'submesh start %.2f, submesh regions %.2f (%d bad simplices at the start, %d solves), '
-                 'recovery %.2f, vertex stage %.2f, verification %.2f, output %.2f; total %.2f. '
-                 'Peak memory (sa\'s own report) %.2f GB.\n' % (
-                     pt['read'], pt['initial_map'], t['disassembly'], t['setup'] - t['disassembly'],
-                     mt.get('start', 0.0), mt.get('solves', 0.0) + mt.get('regions', 0.0),
-                     m.get('start_bad', 0), m.get('solves', 0), t['recovery'], t['vertex_stage'],
-                     t['verification'], pt['output'], pt['total'], rep['parameterization']['peak_memory_gb']))
+    rows, stages = [], []
+    for name, source, levels, args in LARGE_CASES:
+        if a.only and a.only not in name:
+            continue
+        mesh = os.path.join(work, '%s-L%d.obj' % (os.path.splitext(source)[0], levels))
+        s = run_measured([a.sa, 'subdivide', '--mesh', os.path.join(a.data, 'param', source),
+                          '--levels', str(levels), '--out', mesh, '--force'], a.timeout)
+        if s is None or s['code'] != 0:
+            rows.append(dict(name=name, status='subdivision failed: %s' % (s and s['err'])))
+            continue
+        row, rep = run_param(a, mesh, args, work, name)
+        row['name'] = '%s (`%s`)' % (name, ' '.join(args))
+        rows.append(row)
+        stages.append(stage_row(name, row, rep, s['wall']))
+        os.remove(mesh)
+    text = ('`sa subdivide --mesh M --levels L` (Loop), then `sa param` with the arguments shown:\n\n'
+            + table(rows) + '\n')
+    text += ('Stages (s, from sa\'s report; for --optimal-bound, of the last round, and "solve" is '
+             'every round\'s): subdivide, read, initial map (LSCM), disassembly, other setup, submesh '
+             'start, submesh regions, recovery, vertex stage, verification, solve (all of Simplex '
+             'Assembly), output, total of sa param; bad simplices at the start / region solves; '
+             'status; peak memory (sa\'s own report) and bytes per face:\n\n'
+             '| case | subdivide | read | LSCM | disassembly | other setup | submesh start | '
+             'regions | recovery | vertex stage | verification | solve | output | total | bad / '
+             'solves | status | peak (GB) | bytes/face |\n' + '|---' * 18 + '|\n' +
+             '\n'.join(stages) + '\n')
     return text
 
 
@@ -197,7 +232,8 @@ def main():
     ap.add_argument('--data', default=os.path.join(ROOT, '..', 'shared', 'data'))
     ap.add_argument('--checker', default=os.path.join(ROOT, '..', 'shared', 'tools', 'check_map.py'))
     ap.add_argument('--only', help='run only the meshes whose name contains this text')
-    ap.add_argument('--large', action='store_true', help='add the 1.45M-face case')
+    ap.add_argument('--large', action='store_true', help='add the subdivided cases (LARGE_CASES)')
+    ap.add_argument('--large-only', action='store_true', help='only the subdivided cases')
     ap.add_argument('--robustness', action='store_true',
                     help='only golf.obj and generated disks of its class, with and without the '
                          'Tutte fallback')
@@ -216,18 +252,18 @@ def main():
         return 0
     folder = os.path.join(a.data, 'param')
     rows = []
-    for name in sorted(os.listdir(folder)):
+    for name in sorted(os.listdir(folder)) if not a.large_only else []:
         if a.only and a.only not in name:
             continue
         rows.append(run_param(a, os.path.join(folder, name), ['--optimal-bound'], work, name)[0])
-    output = ('`sa param --mesh M --optimal-bound` (LSCM start, E_m = area-weighted |A - A0|^2, '
+    output = '' if a.large_only else ('`sa param --mesh M --optimal-bound` (LSCM start, E_m = area-weighted |A - A0|^2, '
               'rounds of K = the largest distortion until it stops improving):\n\n' + table(rows))
-    if a.large:
+    if a.large or a.large_only:
         output += '\n' + large_case(a, work)
     print(output)
     if a.write:
-        write_section(a.write, 'param-benchmarks', 'python3 bench/param_benchmarks.py ' + ' '.join(sys.argv[1:]),
-                      output)
+        write_section(a.write, 'param-large' if a.large_only else 'param-benchmarks',
+                      'python3 bench/param_benchmarks.py ' + ' '.join(sys.argv[1:]), output)
     return 0
 
 

@@ -20,7 +20,6 @@
 #include <iostream>
 #include <unsupported/Eigen/SparseExtra>
 
-#include "optim/serial_openmp.h"
 #include "optim/supernodal_solve.h"
 
 namespace {
@@ -111,7 +110,6 @@ int main(int argc, char** argv) {
     common.nrelax[2] = 128;
     cholmod_sparse a = Eigen::viewAsCholmod(lower);
     a.stype = -1;
-    const sa::SerialOpenMP serial;
     cholmod_factor* factor = cholmod_analyze(&a, &common);
     cholmod_factorize(&a, factor, &common);
     if (common.status != CHOLMOD_OK || !factor->is_super) {

@@ -5,7 +5,7 @@
 //
 //   conformal           2D: |A|_F^2 / (2 det A) = (s1/s2 + s2/s1) / 2
 //                       3D: (|A|_F^2 |A^-1|_F^2 - 1) / 8
-//                       (both equal 1 exactly at a similarity; see DESIGN.md on the paper's 1/2^d)
+//                       (1 at a similarity: the paper's general 1/2^d must read 1/2^(d(d-1)/2))
 //   volumetric          (det A + 1 / det A) / 2
 //   isometric           gamma * conformal + (1 - gamma) * volumetric   (gamma = 0.5 by default)
 //   dirichlet           sum_k s_k^2 = |A|_F^2

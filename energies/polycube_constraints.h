@@ -1,5 +1,5 @@
 #pragma once
-// The linear constraints of a PolyCube map (the paper's 5.3; DESIGN.md), as rows of
+// The linear constraints of a PolyCube map (the paper's 5.3), as rows of
 // LinearConstraintEnergy (energies/linear_constraint_energy.h), in the two variable layouts of
 // Simplex Assembly:
 //

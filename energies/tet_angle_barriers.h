@@ -149,7 +149,7 @@ double angle_sum_energy(double limit, const Vec<N>& x, int parts, const Index_& 
         for (int i = 0; i < B; ++i) dtheta[at[i]] += phi[k].gradient[i];
     }
     if (dtheta_out != nullptr) *dtheta_out = dtheta;
-    const double e = angle_sum_barrier(theta, limit);
+    const double e = sa::angle_sum_barrier(theta, limit);  // detail:: has another
     if (!std::isfinite(e)) return kInfinity;
     if (g == nullptr) return e;
     // E' = E^2 and E'' = 2 E^3 with respect to theta.

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "geometry/arap_local_step.h"
+#include "geometry/handle_rotation_start.h"
 #include "geometry/map_quality.h"
 #include "optim/anderson_acceleration.h"
 #include "optim/errors.h"
@@ -87,17 +88,19 @@ ArapResult arap_iterations(const SimplicialMesh& mesh, const RestFrames<D>& fram
             result.stop = "stopped by the caller";
             break;
         }
-        if (move <= limit) {
-            result.converged = true;
-            result.stop = "converged";
-            break;
-        }
         if (watch.seconds() >= options.max_time_seconds) {
             result.stop = "time limit";
             break;
         }
         if (iteration == options.max_iterations) break;
         plain = recovery.recover(M, start);
+        // The fixed-point residual |G(x) - x|: an accelerated iterate's own move says little (it
+        // may land close to the last one by chance, or oscillate about the fixed point).
+        if ((plain - x).cwiseAbs().maxCoeff() <= limit) {
+            result.converged = true;
+            result.stop = "converged";
+            break;
+        }
         x = accelerate ? unflatten(anderson.next(flatten(x), flatten(plain)), rows) : plain;
     }
     result.seconds = watch.seconds();
@@ -135,7 +138,23 @@ ArapResult arap_deformation(const SimplicialMesh& mesh, const std::vector<Index>
     }
     const RestFrames<D> frames = rest_frames<D>(mesh);
     const VertexRecovery<D> recovery(mesh, frames, std::move(fixed));
-    return arap_iterations<D>(mesh, frames, recovery, start, options);
+    std::string description = "rest shape";
+    if (options.rotation_start && !handles.empty()) {
+        HandleRotationStart rotated = handle_rotation_start<D>(mesh, frames, recovery, start);
+        std::vector<Mat<D>> M;
+        const double q_rest =
+            fit_rigid_parts<D>(frames, linear_parts<D>(mesh, frames, start), options.similarity, M);
+        const double q_rotated = fit_rigid_parts<D>(
+            frames, linear_parts<D>(mesh, frames, rotated.positions), options.similarity, M);
+        if (q_rotated < q_rest) {
+            start = std::move(rotated.positions);
+            description = "handle rotations (" + std::to_string(rotated.rotation_groups) + " of " +
+                          std::to_string(rotated.groups) + " groups)";
+        }
+    }
+    ArapResult result = arap_iterations<D>(mesh, frames, recovery, start, options);
+    result.start = description;
+    return result;
 }
 
 template ArapResult arap_iterations<2>(const SimplicialMesh&, const RestFrames<2>&,

@@ -11,11 +11,20 @@
 // (geometry/vertex_recovery.h: the Laplacian, factored once). Plain iteration never increases Q
 // but creeps; the iterates are Anderson-accelerated (optim/anderson_acceleration.h, Peng et al.
 // 2018), and an accelerated point that raises Q is replaced by the plain step. Nothing keeps
-// simplices from inverting: that is what Simplex Assembly repairs afterwards.
+// simplices from inverting: that is what Simplex Assembly repairs afterwards. arap_deformation()
+// starts from the handle groups' rotations interpolated through the mesh
+// (geometry/handle_rotation_start.h) when that start has the lower Q: from the rest shape with
+// only the handles moved, a twist or a bend must creep in from the handles (the bar twisted by
+// 180 degrees: 925 iterations, to a local minimum with 6 tetrahedra folded about the axis).
 //
-// It stops when an iteration moves no vertex by more than `tolerance` times the bounding-box
-// diagonal of the start (converged), after max_iterations, after max_time_seconds, or when the
-// caller's after_iteration returns true.
+// It stops when the plain step from the last iterate x (a local and a global step, G(x)) would
+// move no vertex by more than `tolerance` times the bounding-box diagonal of the start
+// (converged: the fixed-point residual, the usual test of Anderson acceleration), after
+// max_iterations, after max_time_seconds, or when the caller's after_iteration returns true.
+//
+// Where the fixed point has inverted simplices (the knight's pose: 52), the local step's
+// rotation jumps as their two smallest singular values cross, G is not smooth there, and about
+// a third of the accelerated points are rejected: such poses still take hundreds of iterations.
 
 #include <Eigen/Core>
 #include <functional>
@@ -38,12 +47,17 @@ struct ArapIterate {
 
 struct ArapOptions {
     int max_iterations = 1000;
-    /// Converged when no vertex moves by more than tolerance * diagonal in an iteration.
+    /// Converged when the plain step from the last iterate moves no vertex by more than
+    /// tolerance * diagonal.
     double tolerance = 1e-9;
     /// Differences kept by the Anderson acceleration (Peng et al. use 5 to 10); 0 = plain.
     int anderson_history = 6;
     /// Similarities (ASAP) instead of rotations.
     bool similarity = false;
+    /// arap_deformation() only: start from geometry/handle_rotation_start.h (the handle groups'
+    /// rotations interpolated through the mesh) when its Q is lower than that of the rest shape
+    /// with the handles moved; false: always from the latter.
+    bool rotation_start = true;
     double max_time_seconds = kInfinity;
     /// Called after every iteration; returning true stops the iterations there.
     std::function<bool(const ArapIterate&)> after_iteration;
@@ -61,6 +75,8 @@ struct ArapResult {
     bool converged = false;
     std::string stop;  ///< why it stopped, in a few words
     double seconds = 0.0;
+    /// arap_deformation() only: which start, "rest shape" or "handle rotations (G of H groups)".
+    std::string start;
 };
 
 /// The iterations from `start` (#V x D; its rows at the fixed vertices of `recovery` are the
@@ -71,7 +87,8 @@ ArapResult arap_iterations(const SimplicialMesh& mesh, const RestFrames<D>& fram
                            const ArapOptions& options = {});
 
 /// ARAP deformation of `mesh` (simplices of dimension D in D-space: planar triangles or
-/// tetrahedra) from its rest shape with `handles` moved to `targets` (#handles x D). Throws
+/// tetrahedra) from its rest shape with `handles` moved to `targets` (#handles x D), or from the
+/// handle rotations' start (options.rotation_start). Throws
 /// InvalidArgumentError on inconsistent sizes, a handle out of range or repeated, or a connected
 /// component without a handle.
 template <int D>

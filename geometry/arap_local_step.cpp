@@ -2,13 +2,14 @@
 
 #include <tbb/parallel_for.h>
 
-#include "geometry/disassembly.h"
+#include "geometry/rotation_fit.h"
 
 namespace sa {
 
 template <int D>
 double fit_rigid_parts(const RestFrames<D>& frames, const std::vector<Mat<D>>& A, bool similarity,
                        std::vector<Mat<D>>& M) {
+    const bool warm = M.size() == A.size();  // the last fit's M_i (s R_i) start the new one
     M.resize(A.size());
     std::vector<double> terms(A.size(), 0.0);
     tbb::parallel_for(std::size_t(0), A.size(), [&](std::size_t i) {
@@ -18,7 +19,7 @@ double fit_rigid_parts(const RestFrames<D>& frames, const std::vector<Mat<D>>& A
         }
         const Mat<D> C = double(D + 1) * frames.corners[i] * frames.corners[i].transpose();
         const Mat<D> AC = A[i] * C;
-        M[i] = closest_rotation<D>(AC);
+        M[i] = warm ? fit_rotation<D>(AC, M[i]) : fit_rotation<D>(AC);
         if (similarity) M[i] *= std::max((M[i].transpose() * AC).trace() / C.trace(), 0.0);
         const Mat<D> difference = M[i] - A[i];
         terms[i] = (difference * C * difference.transpose()).trace();

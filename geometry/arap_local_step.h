@@ -19,6 +19,8 @@ namespace sa {
 
 /// Fills M (resized to A's size) with each simplex's best rotation, or similarity when
 /// `similarity`, for the linear parts A; returns Q(x, M). A non-finite A_i gets the identity.
+/// The rotations are geometry/rotation_fit.h's, started from M's entries when M already has A's
+/// size (the last iteration's fit: the same result to round-off, in fewer operations).
 /// Parallel over simplices; the result does not depend on the thread count.
 template <int D>
 double fit_rigid_parts(const RestFrames<D>& frames, const std::vector<Mat<D>>& A, bool similarity,

@@ -11,7 +11,7 @@
 // K = 1 gives the closest similarity (t = the mean singular value), K = inf leaves sigma as is.
 //
 // An inverted A (det A < 0) is first reflected along its smallest singular direction, as the
-// other projections of the disassembly do (geometry/disassembly.h, DESIGN.md): U's last column
+// other projections of the disassembly do (geometry/disassembly.h): U's last column
 // is negated, so that U diag(sigma') V^T has det > 0.
 
 #include "optim/types.h"

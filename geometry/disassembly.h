@@ -3,7 +3,7 @@
 // the barrier's feasible set, so that E_C is finite at the start.
 //
 //   closest_rotation(A)    R = U V^T with det R = +1: for det A < 0 the smallest singular
-//                          direction is flipped first (DESIGN.md)
+//                          direction is flipped first (a rotation, never a reflection)
 //   closest_similarity(A)  s R with R as above and s the mean singular value
 //   bounded:K              the closest matrix with sigma_max / sigma_min <= K (Kovalsky et al.
 //                          2015, Figure 6(c); geometry/bounded_distortion_projection.h)

@@ -36,11 +36,36 @@ MeshTopology mesh_topology(const SimplicialMesh& mesh, const std::string& source
             for (int a = 0; a < k; ++a) {
                 if (a != o) f.vertices[m++] = mesh.simplices(s, a);
             }
-            std::sort(f.vertices.begin(), f.vertices.begin() + d);
+            auto order = [&](int a, int b) {
+                if (f.vertices[b] < f.vertices[a]) std::swap(f.vertices[a], f.vertices[b]);
+            };
+            // The first d vertices in increasing order.
+            if (d >= 2) order(0, 1);
+            if (d >= 3) order(1, 2), order(0, 1);
             facets.push_back(f);
         }
     }
-    std::sort(facets.begin(), facets.end());
+    // Bucketed by their smallest vertex, each bucket sorted: the order of one global sort of the
+    // keys (several times faster on a million simplices, where a comparison sort of the keys was
+    // most of this function).
+    {
+        std::vector<Index> begin(std::size_t(nv) + 1, 0);
+        for (const FacetKey& f : facets) ++begin[f.vertices[0] + 1];
+        std::partial_sum(begin.begin(), begin.end(), begin.begin());
+        std::vector<FacetKey> bucketed(facets.size());
+        std::vector<Index> cursor(begin.begin(), begin.end() - 1);
+        for (const FacetKey& f : facets) bucketed[cursor[f.vertices[0]]++] = f;
+        facets = {};
+        for (Index v = 0; v < nv; ++v) {  // a few keys each: insertion sort
+            for (Index i = begin[v] + 1; i < begin[v + 1]; ++i) {
+                const FacetKey key = bucketed[i];
+                Index j = i;
+                for (; j > begin[v] && key < bucketed[j - 1]; --j) bucketed[j] = bucketed[j - 1];
+                bucketed[j] = key;
+            }
+        }
+        facets.swap(bucketed);
+    }
     t.neighbour.assign(std::size_t(n) * k, -1);
     for (std::size_t i = 0; i < facets.size();) {
         std::size_t j = i + 1;
@@ -104,16 +129,21 @@ MeshTopology mesh_topology(const SimplicialMesh& mesh, const std::string& source
         for (int a = 0; a < k; ++a) t.simplices_of_vertex[cursor[mesh.simplices(s, a)]++] = s;
     }
 
-    for (Index s = 0; s < n; ++s) {
-        for (int a = 0; a < k; ++a) {
-            for (int b = a + 1; b < k; ++b) {
-                Index u = mesh.simplices(s, a), v = mesh.simplices(s, b);
-                t.edges.push_back({std::min(u, v), std::max(u, v)});
+    // Edges: the larger ends of each vertex's edges to larger vertices, bucketed by the smaller
+    // end (the simplices around each vertex), each bucket sorted and made unique.
+    std::vector<Index> larger;
+    for (Index u = 0; u < nv; ++u) {
+        larger.clear();
+        for (Index i = t.vertex_begin[u]; i < t.vertex_begin[u + 1]; ++i) {
+            const Index s = t.simplices_of_vertex[i];
+            for (int a = 0; a < k; ++a) {
+                if (mesh.simplices(s, a) > u) larger.push_back(mesh.simplices(s, a));
             }
         }
+        std::sort(larger.begin(), larger.end());
+        larger.erase(std::unique(larger.begin(), larger.end()), larger.end());
+        for (Index v : larger) t.edges.push_back({u, v});
     }
-    std::sort(t.edges.begin(), t.edges.end());
-    t.edges.erase(std::unique(t.edges.begin(), t.edges.end()), t.edges.end());
     return t;
 }
 

@@ -2,8 +2,8 @@
 // The table of OpenMesh-backed functions that the plugin libsa_openmesh.so exports
 // (geometry/io/openmesh_plugin.cpp and geometry/subdivision_plugin.cpp, linked with OpenMesh);
 // geometry/io/openmesh_io.cpp and geometry/subdivision.cpp forward to it, loading the plugin on
-// first use (geometry/io/plugin_library.h). Linked into every program, libOpenMeshCore.so cost
-// each start 2.6 ms (an empty program: 2.4 ms, 5.0 ms with it; perf stat -r 40).
+// first use (geometry/io/plugin_library.h): linked into every program, libOpenMeshCore.so's
+// relocations and static initializers cost each start (BENCHMARKS.md).
 
 #include "geometry/io/openmesh_io.h"
 #include "geometry/subdivision.h"

@@ -1,6 +1,6 @@
 #pragma once
 // Each simplex's rest shape in a frame of its own, with the frame's origin at the simplex's
-// centroid (DESIGN.md: without it translations couple strongly to A).
+// centroid (from a vertex instead, translations couple strongly to A and line searches stall).
 //
 // D is the simplex dimension. Triangles in the plane and tetrahedra keep the mesh's axes;
 // triangles in space get an orthonormal frame in their own plane (x along the first edge), in

@@ -3,12 +3,14 @@
 // (N) and its Hessian (N x N) with respect to N variables. Write an energy once as a template on
 // its scalar type and evaluate it with double (value only) or Dual<N> (value, gradient, Hessian):
 //
+// clang-format off
 //   template <class T> T energy(const Eigen::Matrix<T, 2, 1>& x) {
-//       using std::exp;            // so that exp(...) finds sa::exp for Dual and std::exp for
-//       double return exp(x[0]) * x[1];
+//       using std::exp;  // so that exp(...) finds sa::exp for Dual and std::exp for double
+//       return exp(x[0]) * x[1];
 //   }
 //   auto xd = sa::Dual<2>::variables(Vec<2>(1.0, 2.0));
-//   sa::Dual<2> e = energy(xd);    // e.value, e.gradient, e.hessian
+//   sa::Dual<2> e = energy(xd);  // e.value, e.gradient, e.hessian
+// clang-format on
 //
 // Dual<N> works inside fixed-size Eigen matrices (determinant(), inverse(), squaredNorm(), ...).
 // Each operation costs O(N^2): meant for elements of a few to a few dozen variables.

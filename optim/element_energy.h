@@ -23,9 +23,8 @@
 //       the term's weight. value_gradient(...) below, when present, spares the Hessian later.
 //   static constexpr bool is_convex = true;
 //       The Hessian is positive semidefinite wherever the energy is finite (a sum of squares of
-//       linear functions, say): it is never projected. Projecting the 18 x 18 blocks of 3D edge
-//       assembly was a large part of a small solve's setup (a 300-tetrahedron submesh: 35 ms
-//       with the projection, 27 ms without).
+//       linear functions, say): it is never projected (projecting the 18 x 18 blocks of 3D edge
+//       assembly was a large part of a small solve's setup: BENCHMARKS.md).
 //   double value_gradient(Index element, const Vec<N>& x, Vec<N>& gradient) const;
 //   bool project_hessian(Index element, const Vec<N>& x, Mat<N>& hessian, ProjectionMode mode,
 //                        double epsilon) const;
@@ -33,6 +32,10 @@
 //       modes and epsilon of project_hessian_block() but faster, from what the energy knows about
 //       its structure; returns true when it changed the Hessian. SimplexEnergy's gives
 //       project_hessian_block()'s result; VertexSimplexEnergy's projects in A instead (see there).
+//
+//   Index num_elements() const;
+//       How many elements the energy's per-element data covers: Problem::add_term() rejects a
+//       term whose element count differs.
 //
 // Per-element rest data (areas, inverse rest matrices, ...) lives in the energy object and is
 // indexed by the element number passed to every call. Calls are made concurrently from several
@@ -49,8 +52,7 @@ namespace sa {
 template <class E>
 concept ElementEnergy = requires(const E& e, Index i, const Vec<E::arity>& x, Vec<E::arity>& g,
                                  Mat<E::arity>& h) {
-    requires E::arity >
-    0;
+    requires(E::arity > 0);
     { e.value(i, x) } -> std::convertible_to<double>;
     { e.value_gradient_hessian(i, x, g, h) } -> std::convertible_to<double>;
 };
@@ -63,6 +65,11 @@ concept HasMaxStep = requires(const E& e, Index i, const Vec<E::arity>& x) {
 template <class E>
 concept HasValueGradient = requires(const E& e, Index i, const Vec<E::arity>& x, Vec<E::arity>& g) {
     { e.value_gradient(i, x, g) } -> std::convertible_to<double>;
+};
+
+template <class E>
+concept HasElementCount = requires(const E& e) {
+    { e.num_elements() } -> std::convertible_to<std::size_t>;
 };
 
 template <class E>

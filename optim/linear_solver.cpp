@@ -13,7 +13,6 @@
 #include <tbb/parallel_for.h>
 
 #include "optim/errors.h"
-#include "optim/serial_openmp.h"
 #include "optim/supernodal_solve.h"
 
 namespace sa {
@@ -47,10 +46,9 @@ namespace {
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
 /// Fill-reducing ordering for Eigen's simplicial factorizations by SuiteSparse's AMD (the one
-/// CHOLMOD uses) instead of Eigen's own: the same fill, and an analysis ten times faster (tlc/
-/// param2d's 8,090 unknowns: 2.7 ms instead of 23 ms; a 2,937-unknown submesh of tlc/stgc-3d:
-/// 1.8 ms instead of 19 ms; measured once each on this machine), which matters when every
-/// submesh is analyzed once and factored a few times. Eigen hands it the full symmetric pattern.
+/// CHOLMOD uses) instead of Eigen's own: the same fill, and an analysis about ten times faster
+/// (BENCHMARKS.md, "Figures moved out of the code"), which matters when every submesh is analyzed
+/// once and factored a few times. Eigen hands it the full symmetric pattern.
 struct SuiteSparseAmdOrdering {
     template <class Matrix, class Permutation>
     void operator()(const Matrix& symmetric, Permutation& permutation) const {
@@ -99,10 +97,9 @@ void quiet(cholmod_common& common) {
 
 /// Supernodes are merged into larger ones (with some explicit zeros) while they have fewer than
 /// 16, 64 or 128 columns (CHOLMOD's defaults: 4, 16, 48; the allowed share of zeros, zrelax, kept
-/// at its defaults): fewer and larger BLAS calls. Measured per factorization (one OpenBLAS thread):
-/// a 2,937-unknown stgc-3d submesh 6.5 -> 4.4 ms, stgc-3d's full Hessian 59 -> 50 ms, botijo's
-/// vertex stage 240 -> 221 ms, a 1M-unknown grid Laplacian 3.2 -> 2.75 s; larger settings
-/// (64, 128, 256 and more zeros) were slower on all of them.
+/// at its defaults): fewer and larger BLAS calls, faster per factorization on a 3D submesh, a full
+/// 3D system, botijo's vertex stage and a 1M-unknown grid Laplacian; larger settings (64, 128,
+/// 256 and more zeros) were slower on all of them (BENCHMARKS.md, "Figures moved out of the code").
 void relax_supernodes(cholmod_common& common) {
     common.nrelax[0] = 16;
     common.nrelax[1] = 64;
@@ -121,10 +118,9 @@ struct PrepermutedMatrix {
     std::vector<int> source;  ///< entry p of `permuted` <- entry source[p] of A
     std::vector<int> pivot;   ///< pivot[k] = the row of A that is row k of P A P^T
     /// For one right-hand side; kept only when it splits the tree (CHOLMOD's single-thread
-    /// substitutions are otherwise as fast or faster: on deform/stretch's factor, 4,222 small
-    /// supernodes, 8 ms against 10-12 ms for SupernodalSolve on one thread). Per Newton iteration
-    /// of `sa map --mode full`, CHOLMOD's against the split: tlc/param2d (0.82 million factor
-    /// values) 1.0-1.7 against 0.33-0.56 ms, tlc/stgc-3d (3.16 million) 5-6 against 2.0-2.9 ms.
+    /// substitutions are otherwise as fast or faster, as on deform/stretch's factor of 4,222 small
+    /// supernodes). Per Newton iteration, the split against CHOLMOD's: BENCHMARKS.md,
+    /// "Triangular solves alone" and "Figures moved out of the code".
     std::optional<SupernodalSolve> substitution;
 
     /// The pattern of P A P^T, from A's analyzed supernodal factor (its permutation, and its
@@ -240,7 +236,11 @@ struct LinearSolver::Impl {
         switch (t) {
             case LinearSolverType::kCholmodSupernodal:
                 quiet(supernodal.emplace().cholmod());
-                relax_supernodes(supernodal->cholmod());
+                // A single factorization (kAmd) keeps CHOLMOD's default merging: as fast once,
+                // and a smaller factor (LSCM of camel_b.obj Loop-subdivided 4 times, 0.92M
+                // unknowns: 76M stored entries against 123M), which matters where fresh memory
+                // is slow to touch (BENCHMARKS.md, "Planar parameterization at scale").
+                if (ordering != FillOrdering::kAmd) relax_supernodes(supernodal->cholmod());
                 set_ordering(supernodal->cholmod(), ordering);
                 break;
             case LinearSolverType::kCholmodSimplicial:
@@ -260,10 +260,7 @@ struct LinearSolver::Impl {
     template <class Cholmod>
     FactorizationStatus factorize_cholmod(Cholmod& solver, const SparseMatrix& input,
                                           const SparseMatrix& lower) {
-        {
-            const SerialOpenMP serial;
-            solver.factorize(input);
-        }
+        solver.factorize(input);
         const int status = solver.cholmod().status;
         if (solver.info() == Eigen::Success && status >= CHOLMOD_OK)
             return FactorizationStatus::kSuccess;
@@ -308,7 +305,6 @@ void LinearSolver::analyze(const SparseMatrix& lower) {
         throw InvalidArgumentError("linear solver: matrix is " + std::to_string(lower.rows()) +
                                    " x " + std::to_string(lower.cols()) + ", not square");
     }
-    const SerialOpenMP serial;
     // A fresh supernodal solver: the last analysis may have replaced it by a prepermuted one.
     if (impl_->requested == LinearSolverType::kAuto ||
         impl_->type == LinearSolverType::kCholmodSupernodal)
@@ -369,7 +365,6 @@ Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& rhs) const {
 }
 
 Eigen::MatrixXd LinearSolver::solve_columns(const Eigen::MatrixXd& rhs) const {
-    const SerialOpenMP serial;
     switch (impl_->type) {
         case LinearSolverType::kCholmodSupernodal:
             if (impl_->prepermuted) return impl_->prepermuted->solve(*impl_->supernodal, rhs);

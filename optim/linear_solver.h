@@ -9,25 +9,23 @@
 //                        times faster than with Eigen's own AMD, for the same fill).
 //   kAuto                kEigenLDLT when CHOLMOD's analysis counts fewer than kAutoSupernodalFlops
 //                        for the factorization (the supernodes are then too small for BLAS-3 to
-//                        pay), kCholmodSupernodal otherwise. Measured per factorization, CHOLMOD
-//                        run serially (optim/serial_openmp.h), one OpenBLAS thread (the sa
-//                        command's setting): tlc/param2d, 8,090 unknowns, 2.1e7 flops: 4.3 ms
-//                        supernodal, 7.7 ms LDLT; a 2,937-unknown 3D submesh of tlc/stgc-3d,
-//                        2.7e7 flops: 2.6 and 7.5 ms; stgc-3d's full system, 16,845 unknowns,
-//                        3.6e8 flops: 33 and 99 ms; leading 8,000 unknowns of it, 9.7e6 flops:
-//                        2.6 and 4.0 ms; 4,000 unknowns of param2d's, 7.9e5 flops: 0.69 and 0.57
-//                        ms. CHOLMOD's parallel regions run serially inside every call.
+//                        pay), kCholmodSupernodal otherwise: the crossing point of the two on
+//                        systems from 7.9e5 to 3.6e8 flops (BENCHMARKS.md, "Figures moved out of
+//                        the code").
 // The symbolic analysis (fill-reducing ordering) is done by analyze() and reused by every
 // factorize() until analyze() is called again. CHOLMOD's ordering is chosen by FillOrdering:
 //   kBest   CHOLMOD's default: AMD, then METIS when AMD's fill is large, the better kept. Pays off
 //           when the pattern is factored many times (a Newton solve). The supernodal solver then
 //           also permutes the pattern once and factors P A P^T in place with a fixed gather of
-//           the values, where cholmod_factorize would transpose the matrix twice per call (tlc/
-//           stgc-3d's full solve: 25.3-26.6 -> 22.2-22.9 ms per factorization); the factor of
-//           A's analysis serves P A P^T with its permutation reset, so nothing is analyzed twice.
-//   kAmd    AMD alone: analysis several times faster on large meshes (a 1.45M-unknown LSCM
-//           system: 1.4 s instead of 8.2 s) for somewhat more fill; for a single factorization. If
-//           CHOLMOD fails for a reason other than an
+//           the values, where cholmod_factorize would transpose the matrix twice per call; the
+//           factor of A's analysis serves P A P^T with its permutation reset, so nothing is
+//           analyzed twice.
+//   kAmd    AMD alone: analysis several times faster on large meshes for somewhat more fill; for
+//           a single factorization.
+// (Measurements of each choice: BENCHMARKS.md, "Figures moved out of the code".)
+//
+// CHOLMOD's OpenMP regions run as the process's OpenMP runtime runs them (the sa command runs
+// them serially: frontends/cli/serial_openmp.h). If CHOLMOD fails for a reason other than an
 // indefinite matrix (out of memory, a problem too large), the solver falls back to Eigen's
 // SimplicialLDLT and says so in fallback_reason().
 

@@ -21,8 +21,8 @@ std::string format(const char* what, double value) {
     return out.str();
 }
 
-/// Whether the n values are all finite, on the arena's threads (a serial pass over tlc/stgc-3d's
-/// 386,211 Hessian entries was part of the 0.3 ms per iteration outside the timed phases).
+/// Whether the n values are all finite, on the arena's threads (a serial pass over a mid-size
+/// Hessian was a visible part of an iteration's time outside the timed phases).
 bool all_finite(const double* values, Index n) {
     return tbb::parallel_reduce(
         tbb::blocked_range<Index>(0, n, 1 << 15), true,

@@ -1,12 +1,12 @@
 #pragma once
 // Batched first touches of fresh memory.
 //
-// On the virtual machines this project is measured on, the first write to a fresh 4 KB page costs
-// about 11 us (a trap to the hypervisor per page): zero-filling a fresh 1.5 MB buffer took 4.3-6.5
-// ms, against 1.1-1.3 ms when the pages were first mapped in one madvise(MADV_POPULATE_WRITE) call
-// (Linux 5.14+; /tmp micro-benchmark, glibc and jemalloc alike, BENCHMARKS.md). The Hessian
-// assembler allocates its per-entry tables once per problem and fills them at once, so it maps
-// them this way.
+// On the virtual machines this project is measured on, the first write to a fresh 4 KB page is a
+// trap to the hypervisor; mapping a fresh buffer's pages in one madvise(MADV_POPULATE_WRITE) call
+// (Linux 5.14+) was several times faster than faulting them in one by one (BENCHMARKS.md,
+// "Figures moved out of the code"). The Hessian assembler allocates its per-entry tables once per
+// problem and fills them at once, so it maps them this way. Only the buffers the call is given:
+// nothing process-wide.
 
 #include <cstddef>
 #include <vector>

@@ -32,6 +32,18 @@ void Problem::check_element_index(const std::string& term, std::size_t element, 
     }
 }
 
+void Problem::check_element_data(const std::string& term, std::size_t elements,
+                                 const std::vector<std::size_t>& sizes, const char* what) {
+    for (std::size_t k = 0; k < sizes.size(); ++k) {
+        if (sizes[k] == elements) continue;
+        std::ostringstream msg;
+        msg << "term '" << term << "': " << what;
+        if (sizes.size() > 1) msg << " (array " << k + 1 << " of " << sizes.size() << ")";
+        msg << " has " << sizes[k] << " entries for " << elements << " elements";
+        throw InvalidArgumentError(msg.str());
+    }
+}
+
 void Problem::set_fixed(Index variable, bool fixed) {
     if (variable < 0 || variable >= num_variables()) {
         std::ostringstream msg;

@@ -2,24 +2,35 @@
 // A problem: a vector of variables and a list of terms, each an element energy summed over many
 // elements. Its energy is E(x) = sum_t weight_t * sum_e energy_t(element e's variables).
 //
+// clang-format off
 //   sa::Problem problem(x0);
-//   problem.add_term("distortion", MyEnergy{rest}, elements);        // elements: {{i, j, ...},
-//   ...} problem.set_fixed(7);                                            // a pinned variable
+//   problem.add_term("distortion", MyEnergy{rest}, elements);   // elements: {{i, j, ...}, ...}
+//   problem.add_elements<4>("springs", springs,                 // a lambda over the scalar type
+//                           [&](auto const& x, sa::Index e) { ... });
+//   problem.set_fixed(7);                                       // a pinned variable
 //   sa::NewtonSummary summary = sa::NewtonSolver(options).solve(problem);
+// clang-format on
 //
 // Variables may be fixed (they keep their value and leave the linear system), grouped into named
 // blocks that carry a Hessian-only diagonal shift and take part, or not, in the regularization the
-// Newton loop adds when a factorization fails.
+// Newton loop adds when a factorization fails. point_variables.h gives the variables of mesh
+// vertices and simplices; problem_evaluation.h evaluates E, its gradient and projected Hessian
+// for callers who run their own loop.
 
 #include <Eigen/Core>
 #include <array>
+#include <concepts>
 #include <cstdint>
+#include <iterator>
 #include <memory>
+#include <ranges>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "optim/errors.h"
+#include "optim/lambda_energy.h"
 #include "optim/term.h"
 
 namespace sa {
@@ -40,6 +51,26 @@ struct VariableBlock {
     bool regularize_on_failure = true;
 };
 
+/// The sizes of arrays of per-element data (rest shapes, areas, targets, ...) that an element
+/// function reads by element index: add_elements() checks each against the number of elements.
+struct PerElement {
+    std::vector<std::size_t> sizes;
+};
+
+/// PerElement{...} of the given arrays: std::vector, std::array, or Eigen matrices with one row
+/// per element.
+template <class... Arrays>
+PerElement per_element(const Arrays&... arrays) {
+    auto count = [](const auto& a) -> std::size_t {
+        if constexpr (requires { a.rows(); }) {
+            return static_cast<std::size_t>(a.rows());
+        } else {
+            return std::size(a);
+        }
+    };
+    return PerElement{{count(arrays)...}};
+}
+
 class Problem {
   public:
     /// A problem over `variables.size()` variables, starting from `variables`.
@@ -55,10 +86,16 @@ class Problem {
     void set_variables(const Eigen::VectorXd& variables);
 
     /// Adds `energy` over `elements` (each names E::arity variable indices) with `weight`.
-    /// Throws InvalidArgumentError naming the term and element for an index out of range.
+    /// Throws InvalidArgumentError naming the term and element for an index out of range, and,
+    /// when the energy says how many elements its per-element data covers (an optional member
+    /// `num_elements()`, element_energy.h), for a count that differs from elements.size().
     template <ElementEnergy E>
     TermId add_term(std::string name, E energy, std::vector<std::array<Index, E::arity>> elements,
                     double weight = 1.0) {
+        if constexpr (HasElementCount<E>) {
+            check_element_data(name, elements.size(), {std::size_t(energy.num_elements())},
+                               "the energy's per-element data covers");
+        }
         for (std::size_t e = 0; e < elements.size(); ++e) {
             for (Index v : elements[e]) check_element_index(name, e, v);
         }
@@ -70,6 +107,25 @@ class Problem {
         return static_cast<TermId>(terms_.size() - 1);
     }
 
+    /// Adds the energy `function(x, e)` of each element e, written once over the scalar type
+    /// (lambda_energy.h): x is the element's N variables (Eigen::Matrix<T, N, 1>, T double or
+    /// Dual<N>), the value a T. Gradients and Hessians come from automatic differentiation.
+    template <int N, class Function>
+    TermId add_elements(std::string name, std::vector<std::array<Index, N>> elements,
+                        Function&& function, double weight = 1.0) {
+        return add_term(std::move(name), lambda_energy<N>(std::forward<Function>(function)),
+                        std::move(elements), weight);
+    }
+    /// The same, first checking that each array of per-element data the function reads has one
+    /// entry per element (throws InvalidArgumentError naming the term and both counts).
+    template <int N, class Function>
+    TermId add_elements(std::string name, std::vector<std::array<Index, N>> elements,
+                        const PerElement& data, Function&& function, double weight = 1.0) {
+        check_element_data(name, elements.size(), data.sizes, "per-element data");
+        return add_elements<N>(std::move(name), std::move(elements),
+                               std::forward<Function>(function), weight);
+    }
+
     int num_terms() const { return static_cast<int>(terms_.size()); }
     const Term& term(TermId id) const { return *terms_.at(id); }
     Term& term(TermId id) { return *terms_.at(id); }
@@ -79,6 +135,12 @@ class Problem {
 
     /// Fixes or frees a variable. A fixed variable keeps its current value.
     void set_fixed(Index variable, bool fixed = true);
+    /// Fixes or frees several variables (e.g. point_variables<D>(v), a vertex's coordinates).
+    template <std::ranges::range Variables>
+    requires std::convertible_to<std::ranges::range_value_t<Variables>, Index>
+    void set_fixed(const Variables& variables, bool fixed = true) {
+        for (Index v : variables) set_fixed(v, fixed);
+    }
     bool is_fixed(Index variable) const { return fixed_.at(variable) != 0; }
     Index num_free_variables() const;
 
@@ -104,6 +166,8 @@ class Problem {
 
   private:
     void check_element_index(const std::string& term, std::size_t element, Index v) const;
+    static void check_element_data(const std::string& term, std::size_t elements,
+                                   const std::vector<std::size_t>& sizes, const char* what);
 
     Eigen::VectorXd variables_;
     std::vector<std::unique_ptr<Term>> terms_;

@@ -21,9 +21,9 @@ constexpr double kLargestUsefulShare = 0.85;
 
 /// How far ahead of the column being read the substitutions prefetch the factor: 256 values
 /// (2 KB). The factor streams from memory after a factorization, and the hardware prefetcher
-/// stops at page boundaries: on the factors of tlc/stgc-3d and deform/stretch (bench/
-/// triangular_solve.cpp --refactor, two threads) 2.5-3.0 against 2.8-3.3 ms and 6.4-6.6 against
-/// 7.9-8.0 ms per solve; 4, 8 and 16 KB ahead were no better.
+/// stops at page boundaries: faster on the factors of tlc/stgc-3d and deform/stretch (bench/
+/// triangular_solve.cpp --refactor, two threads; BENCHMARKS.md); 4, 8 and 16 KB ahead were no
+/// better.
 constexpr int kPrefetchAhead = 256;
 
 /// Prefetches the n values from `from` on (one request per 64-byte line).
@@ -54,8 +54,7 @@ double fixed_order_dot(const double* __restrict a, const double* __restrict b, i
 /// full systems, each solve after a factorization (bench/triangular_solve.cpp --refactor):
 /// Eigen's blocked triangular solve and gemv, a triangle pass then a rectangle pass, and panels
 /// of eight columns updating the rows below at once were no faster on stgc-3d, and the panels
-/// were slower on stretch's 4,222 supernodes of about 36 columns (14-15 against 10-12 ms on one
-/// thread).
+/// were slower on stretch's 4,222 supernodes of about 36 columns (BENCHMARKS.md).
 void supernode_forward(const double* L, int m, int k, double* x) {
     for (int j = 0; j < k; ++j) {
         const double* column = L + std::ptrdiff_t(j) * m;

@@ -4,9 +4,9 @@
 //
 // Why: one triangular solve per Newton iteration reads the whole factor twice (L, then L^T), one
 // dense supernode after another. CHOLMOD does it on one thread (dtrsv and dgemv per supernode);
-// on tlc/stgc-3d's full system (3.16 million factor values) that was 5-6 ms per iteration against
-// a 25-30 ms factorization, the largest cost of an iteration after it, and the second core was
-// idle during it. Split here: 2.0-2.9 ms (bench/iteration_cost.py). The split is limited by the
+// on tlc/stgc-3d's full system it was the largest cost of an iteration after the factorization,
+// and the second core was idle during it; split here, it takes about half as long (BENCHMARKS.md,
+// "Triangular solves alone", bench/iteration_cost.py). The split is limited by the
 // top, which on a mesh's tree is mostly a chain of large separator supernodes (stgc-3d: 28% of
 // the factor in 20 supernodes, serial).
 //

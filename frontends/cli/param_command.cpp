@@ -77,6 +77,12 @@ CLI::App* add_param_command(CLI::App& app, ParamArguments& a) {
         ->check(integer_at_least(1))
         ->capture_default_str();
     param
+        ->add_option("--max-time", a.max_time,
+                     "wall-clock limit in seconds on the whole solve (every stage, fallback and "
+                     "bound round takes what is left); the map reached by then is verified, "
+                     "written and reported as it is")
+        ->capture_default_str();
+    param
         ->add_option("--out", a.out,
                      "the surface with its map: .obj (vt per vertex) or .vtu/.vtk (point data uv)")
         ->required();
@@ -111,6 +117,7 @@ int run_param_command(const ParamArguments& a) {
     solver.mode = parse_option("--mode", a.mode, parse_solve_mode);
     solver.num_threads = a.threads;
     solver.max_iterations = a.max_iterations;
+    solver.max_time_seconds = a.max_time;
     solver.validate();
     if (a.optimal_bound)
         options.optimal_bound_rounds = a.optimal_bound_rounds > 0 ? a.optimal_bound_rounds : 10;

@@ -5,11 +5,6 @@
 #include <cstdlib>
 #include <new>
 
-#include "frontends/cli/out_of_memory.h"
-#ifndef SA_SYSTEM_ALLOCATOR
-#include "frontends/cli/populated_heap.h"
-#endif
-
 // jemalloc, the allocator the command links, reads `malloc_conf` when it starts, before main
 // (MALLOC_CONF in the environment can still override it).
 //
@@ -19,11 +14,11 @@
 // page faults: tlc/stgc-3d took 3,600 faults and 0.117 s with glibc's malloc, 1,700 and 0.078 s
 // with these settings; tlc/cube 0.051 -> 0.042 s (perf stat -r 8, BENCHMARKS.md).
 //
-// narenas:1 and oversize_threshold:0: every thread and every size allocates from arena 0, the
-// one whose growth populated_heap.h maps in one call (each further arena would also map its own
-// metadata: eight arenas took `sa --help` from 14 to 29 MB; large allocations would have had an
-// arena of their own). The hot loops do not allocate; botijo's default run took the same time
-// with one arena as with jemalloc's eight.
+// narenas:1 and oversize_threshold:0: every thread and every size allocates from arena 0 (each
+// further arena would also map its own metadata: eight arenas took `sa --help` from 14 to 29 MB).
+// The hot loops do not allocate; botijo's default run took the same time with one arena as with
+// jemalloc's eight. (A hook that mapped each growth of that arena populated was measured and
+// dropped: BENCHMARKS.md, "What the sa command does to its own process".)
 #ifndef SA_SYSTEM_ALLOCATOR
 extern "C" {
 // NOLINTNEXTLINE: the name and type are jemalloc's interface.
@@ -51,9 +46,6 @@ __attribute__((constructor(101))) void one_blas_thread() {
 }  // namespace
 
 void apply_runtime_settings() {
-#ifndef SA_SYSTEM_ALLOCATOR
-    populate_heap_growth();
-#endif
     if (blas_threads_set_here) unsetenv("OPENBLAS_NUM_THREADS");
     // A shared OpenBLAS started before that constructor ran: one thread, as below, all the same.
     if (!blas_threads_set_here && std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;

@@ -5,10 +5,10 @@
 
 namespace sa::cli {
 
-/// Heap growths mapped populated (populated_heap.h), then one OpenBLAS thread, its
-/// idle workers joined, unless OPENBLAS_NUM_THREADS says otherwise (and nothing when the BLAS is
-/// not OpenBLAS). Measured on CHOLMOD supernodal factorizations, OpenBLAS's second thread never
-/// paid on these 2-core machines and its spinning (sched_yield) slowed the small ones, two threads
+/// One OpenBLAS thread, its idle workers joined, unless OPENBLAS_NUM_THREADS says otherwise (and
+/// nothing when the BLAS is not OpenBLAS). Measured on CHOLMOD supernodal factorizations,
+/// OpenBLAS's second thread never paid on these 2-core machines and its spinning (sched_yield)
+/// slowed the small ones, two threads
 /// -> one: tlc/param2d's Hessian 9.8 -> 7.9 ms, a 2,937-unknown stgc-3d submesh 5.1 -> 4.4 ms,
 /// stgc-3d's full Hessian 56 -> 50 ms, botijo's vertex stage 215 -> 221 ms, a 1M-unknown grid
 /// Laplacian 3.0 -> 2.75 s (all with the supernode relaxation of linear_solver.cpp).

@@ -1,5 +1,6 @@
 #include "frontends/cli/seamless_command.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -104,6 +105,11 @@ CLI::App* add_seamless_command(CLI::App& app, SeamlessArguments& a) {
     cmd->add_option("--max-iterations", a.max_iterations, "Newton iterations at most")
         ->check(integer_at_least(1))
         ->capture_default_str();
+    cmd->add_option("--max-time", a.max_time,
+                    "wall-clock limit in seconds on the whole run (the field's assembly and its "
+                    "local repairs take what is left); the map reached by then is verified, "
+                    "written and reported as it is")
+        ->capture_default_str();
     cmd->add_option("--out", a.out, "the surface with per-corner texture coordinates (.obj)")
         ->required();
     cmd->add_option("--vtu", a.vtu,
@@ -147,6 +153,9 @@ int run_seamless_command(const SeamlessArguments& a) {
     options.integrable.mu = a.mu;
     options.integrable.num_threads = a.threads;
     options.integrable.max_iterations = a.max_iterations;
+    if (!(a.max_time > 0.0))
+        throw InvalidArgumentError("--max-time " + std::to_string(a.max_time) + ": expected > 0");
+    options.integrable.max_time_seconds = a.max_time;
 
     set_activity("reading --mesh " + a.mesh);
     MeshFile file = read_mesh_file(a.mesh);
@@ -269,7 +278,10 @@ int run_seamless_command(const SeamlessArguments& a) {
               {"mu", options.integrable.mu},
               {"assembly_tolerance", options.integrable.assembly_tolerance},
               {"seam_tolerance", options.seam_tolerance},
-              {"max_iterations", options.integrable.max_iterations}}},
+              {"max_iterations", options.integrable.max_iterations},
+              {"max_time_seconds", std::isfinite(options.integrable.max_time_seconds)
+                                       ? nlohmann::json(options.integrable.max_time_seconds)
+                                       : nlohmann::json(nullptr)}}},
             {"singularities_before", singularities_json(r.singularities_before)},
             {"singularities_after", singularities_json(r.singularities_after)},
             {"singularities_kept", r.singularities_kept},

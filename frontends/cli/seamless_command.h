@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "optim/types.h"
+
 namespace sa::cli {
 
 struct SeamlessArguments {
@@ -13,6 +15,7 @@ struct SeamlessArguments {
     std::vector<std::string> constraints;  ///< libigl's _b.dmat and _bc.dmat
     double scale = 0.0, mu = 1000.0;
     int threads = 0, max_iterations = 200;
+    double max_time = kInfinity;
     bool no_vtu = false, no_png = false, force = false, quiet = false;
 };
 

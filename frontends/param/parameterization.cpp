@@ -87,6 +87,7 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
     const int rounds = std::max(1, options.optimal_bound_rounds);
     bool have_result = false;
     for (int round = 0; round < rounds; ++round) {
+        if (round > 0 && budget.exhausted()) break;  // keep the last verified round
         Stopwatch round_watch;
         if (round > 0) {
             // The previous result starts the next round, its largest distortion is the new bound.
@@ -96,7 +97,8 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
             log_line(observer.logger, "optimal bound: round " + std::to_string(round) +
                                           ", K = " + std::to_string(previous));
         }
-        SimplexAssemblyResult r = run_simplex_assembly(problem, solver, observer);
+        SimplexAssemblyResult r =
+            run_simplex_assembly(problem, with_time_left(solver, budget), observer);
         if (round == 0) result.initial_quality = r.initial_quality;
         BoundRound record;
         record.bound = solver.bound;

@@ -8,6 +8,7 @@
 #include "geometry/frame_field.h"
 #include "geometry/submesh.h"
 #include "optim/stopwatch.h"
+#include "optim/time_budget.h"
 
 namespace sa {
 
@@ -110,9 +111,12 @@ SeamlessResult repair_folded_field(const SeamlessResult& failed, const SeamlessO
     inner.local_repair = false;
     inner.scale = failed.scale;
 
+    const TimeBudget budget(options.integrable.max_time_seconds);  // for all the attempts
+
     SeamlessResult best = failed;
     for (const Schedule& schedule : kAttempts) {
-        if (seeds.empty()) break;
+        if (seeds.empty() || budget.exhausted()) break;
+        inner.integrable.max_time_seconds = budget.remaining();
         Stopwatch watch;
         FieldRepairAttempt attempt;
         attempt.rings = schedule.rings;

@@ -9,6 +9,7 @@
 #include "geometry/frame_field.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
+#include "optim/time_budget.h"
 
 namespace sa {
 
@@ -84,6 +85,9 @@ SeamlessResult seamless_parameterization(const SimplicialMesh& input,
                                          const std::optional<FrameFieldInput>& field,
                                          const SeamlessOptions& options, const Logger& logger) {
     Stopwatch total, stage;
+    // options.integrable.max_time_seconds holds for the whole run: the assembly and the repairs
+    // take what is left.
+    const TimeBudget budget(options.integrable.max_time_seconds);
     if (input.simplex_dimension() != 2)
         throw InputError("seamless parameterization needs a triangle mesh");
     SeamlessResult r;
@@ -149,8 +153,10 @@ SeamlessResult seamless_parameterization(const SimplicialMesh& input,
     r.times.plain_poisson = stage.lap();
 
     // 4. phi' by Simplex Assembly.
-    r.integrable = integrable_field(mesh, topology, frames, r.field_before, r.matching,
-                                    options.integrable, logger);
+    IntegrableFieldOptions integrable = options.integrable;
+    integrable.max_time_seconds = std::max(budget.remaining(), 1e-3);
+    r.integrable =
+        integrable_field(mesh, topology, frames, r.field_before, r.matching, integrable, logger);
     r.field_after = r.integrable.matrices;
     r.times.integrable = stage.lap();
 
@@ -189,7 +195,11 @@ SeamlessResult seamless_parameterization(const SimplicialMesh& input,
       << (r.integrable.assembled ? "" : " (not assembled)") << "; the plain Poisson map of the "
       << "input field has " << r.plain.quality.inverted << " inverted faces.";
     r.message = m.str();
-    if (!r.success && options.local_repair) return repair_folded_field(r, options, logger);
+    if (!r.success && options.local_repair && !budget.exhausted()) {
+        SeamlessOptions left = options;
+        left.integrable.max_time_seconds = budget.remaining();
+        return repair_folded_field(r, left, logger);
+    }
     return r;
 }
 

@@ -48,6 +48,8 @@ struct SeamlessOptions {
     /// Largest accepted distance, in radians, of a vertex's (u, v) angle sum from a multiple of
     /// pi / 2.
     double cone_tolerance = 1e-6;
+    /// The field's assembly; its max_time_seconds is the wall-clock limit of the whole run (the
+    /// assembly and the local repairs take what is left).
     IntegrableFieldOptions integrable;
     /// When the result does not verify, smooth the field's geometry locally and run again
     /// (local_field_repair.h, the paper's repair); the output keeps the input positions.

@@ -11,6 +11,7 @@
 #include "energies/distortion.h"
 #include "geometry/disassembly.h"
 #include "geometry/handle_feasibility.h"
+#include "geometry/local_injectivity.h"
 #include "geometry/vertex_recovery.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
@@ -285,7 +286,7 @@ double mesh_energy(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions
 
 template <int D>
 void verify_result(const MappingProblem& input, const SimplexAssemblyOptions& options,
-                   SimplexAssemblyResult& result) {
+                   SimplexAssemblyResult& result, const MeshTopology* topology) {
     const SimplicialMesh& original = input.mesh;
     // Measured on both sides scaled by the power of two nearest the rest diagonal's inverse:
     // the linear parts keep every bit, and volumes neither overflow nor underflow on a mesh at
@@ -302,6 +303,15 @@ void verify_result(const MappingProblem& input, const SimplexAssemblyOptions& op
     v.simplices = original.num_simplices();
     v.inverted = result.final_quality.inverted;
     v.degenerate = result.final_quality.degenerate;
+    if (v.inverted == 0 && v.degenerate == 0) {
+        // Every simplex positive does not make the map locally injective: a branch point wraps
+        // its star twice with every simplex positive (geometry/local_injectivity.h).
+        const MeshTopology own = topology ? MeshTopology{} : mesh_topology(original, input.source);
+        const MeshTopology& t = topology ? *topology : own;
+        v.branched =
+            static_cast<Index>(D == 2 ? branched_vertices(original, t, result.positions).size()
+                                      : branched_edges(original, t, result.positions).size());
+    }
     v.handles = static_cast<Index>(input.handles.size());
     for (std::size_t k = 0; k < input.handles.size(); ++k) {
         const Eigen::RowVectorXd target =
@@ -332,8 +342,8 @@ template std::unique_ptr<PreparedProblem<3>> prepare_problem<3>(const MappingPro
 template double mesh_energy<2>(const PreparedProblem<2>&, const Eigen::MatrixXd&);
 template double mesh_energy<3>(const PreparedProblem<3>&, const Eigen::MatrixXd&);
 template void verify_result<2>(const MappingProblem&, const SimplexAssemblyOptions&,
-                               SimplexAssemblyResult&);
+                               SimplexAssemblyResult&, const MeshTopology*);
 template void verify_result<3>(const MappingProblem&, const SimplexAssemblyOptions&,
-                               SimplexAssemblyResult&);
+                               SimplexAssemblyResult&, const MeshTopology*);
 
 }  // namespace sa

@@ -64,9 +64,10 @@ template <int D>
 double mesh_energy(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions);
 
 /// Measures result.positions (original units) against the rest shape and the targets: fills
-/// final_quality, verification and success.
+/// final_quality, verification and success. `topology`, when given, is input.mesh's (it is
+/// computed otherwise).
 template <int D>
 void verify_result(const MappingProblem& input, const SimplexAssemblyOptions& options,
-                   SimplexAssemblyResult& result);
+                   SimplexAssemblyResult& result, const MeshTopology* topology = nullptr);
 
 }  // namespace sa

@@ -20,6 +20,11 @@ std::string Verification::describe() const {
     std::ostringstream out;
     out << "verified from the output positions: " << inverted << " of " << simplices
         << " simplices inverted, " << degenerate << " degenerate";
+    if (branched > 0) {
+        out << ", " << branched
+            << " branch points (an interior vertex or edge the map wraps around more than once: "
+               "not locally injective)";
+    }
     if (handles > 0) {
         out << ", largest handle error " << handle_error << " (tolerance " << handle_tolerance
             << ", " << handles << " handles)";
@@ -262,7 +267,7 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
             result.positions.row(v) = prepared->initial_map.row(v);  // untouched
     }
     Stopwatch stage;
-    verify_result<D>(input, options, result);
+    verify_result<D>(input, options, result, &prepared->topology);
     if (!prepared->assembly.fans.empty()) {
         result.boundary_violations_before =
             count_boundary_violations(prepared->assembly.fans, prepared->initial_map);

@@ -70,13 +70,17 @@ struct Verification {
     Index simplices = 0;
     Index inverted = 0;
     Index degenerate = 0;
+    /// Interior vertices (triangles) or edges (tetrahedra) the map wraps around more than once,
+    /// every simplex positive (geometry/local_injectivity.h); counted when none is inverted.
+    Index branched = 0;
     Index handles = 0;
     double handle_error = 0.0;      ///< largest |x_h - target_h|, in the map's units
     double handle_tolerance = 0.0;  ///< handle_tolerance times the initial map's diagonal
     double bound = kInfinity;       ///< K
     double max_distortion = 0.0;    ///< largest barrier distortion d of the output
     bool passed() const {
-        return inverted == 0 && degenerate == 0 && handle_error <= handle_tolerance;
+        return inverted == 0 && degenerate == 0 && branched == 0 &&
+               handle_error <= handle_tolerance;
     }
     bool within_bound() const { return max_distortion <= bound; }
     /// One sentence: what was measured and the outcome.

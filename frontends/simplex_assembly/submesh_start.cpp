@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "geometry/arap_local_step.h"
+#include "geometry/branch_points.h"
 #include "geometry/disassembly.h"
 #include "geometry/map_quality.h"
 #include "geometry/submesh.h"
@@ -77,6 +78,36 @@ SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& 
     };
     auto done = [&] { return start.bad.empty() && options.until_valid; };
     if (start.bad.empty() || options.start_iterations <= 0) return start;
+    if constexpr (D == 2) {
+        // Folds that are discrete branch points (loops around them turn twice) cannot be repaired
+        // by any region with fixed outer vertices; without handles and with a barrier that
+        // ignores scale, the map composed with a conformal map of the plane loses them
+        // (geometry/branch_points.h). Every vertex moves but the map keeps its distortion, so the
+        // vertex stage stays on the repaired regions, as for the initial map.
+        if (input.handles.empty() && options.distortion == DistortionType::kConformal) {
+            const std::vector<BranchPoint> points =
+                find_branch_points(p.mesh, p.topology, x, start.bad, options.rings);
+            if (!points.empty()) {
+                const Eigen::MatrixXd composed =
+                    remove_branch_points(p.mesh, p.topology, x, points);
+                const std::vector<Mat<D>> parts = linear_parts<D>(p.mesh, p.frames, composed);
+                std::vector<Index> bad = bad_simplices<D>(p, parts);
+                // Kept when fewer folds are beyond repair; it may have more bad simplices.
+                const Index before = count_unrepairable_folds(p.mesh, p.topology, x, start.bad,
+                                                              options.rings),
+                            after = count_unrepairable_folds(p.mesh, p.topology, composed, bad,
+                                                             options.rings);
+                if (after < before || (after == before && bad.size() < start.bad.size())) {
+                    x = composed;
+                    A = parts;
+                    start.positions = p.to_original(x);
+                    start.bad.swap(bad);
+                    start.description = "initial map without its " + std::to_string(points.size()) +
+                                        " branch point" + (points.size() == 1 ? "" : "s");
+                }
+            }
+        }
+    }
     // Local defects: regions no larger than what the auto mode solves in full are solved as they
     // are. The iterations below move every vertex (then the vertex stage covers the whole mesh)
     // and find nothing better there: on tlc/stgc-3d (2 bad tetrahedra of 1,722, regions of 480)
@@ -84,7 +115,7 @@ SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& 
     const Index regions =
         static_cast<Index>(grow_rings(p.mesh, p.topology, start.bad, options.rings).size());
     if (regions <= (D == 2 ? options.auto_full_triangles : options.auto_full_tetrahedra)) {
-        start.description = "initial map (its regions are small)";
+        start.description += " (its regions are small)";
         return start;
     }
 

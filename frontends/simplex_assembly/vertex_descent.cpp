@@ -118,7 +118,7 @@ VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOp
     result.times.vertex_stage += stage.lap();
     result.newton.num_threads = result.vertex_stage.num_threads;  // no assembly ran
     result.positions = prepared.to_original(x);
-    verify_result<D>(input, options, result);
+    verify_result<D>(input, options, result, &prepared.topology);
     if (!prepared.assembly.fans.empty()) {
         result.boundary_violations_before =
             count_boundary_violations(prepared.assembly.fans, prepared.initial_map);

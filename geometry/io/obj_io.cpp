@@ -221,9 +221,11 @@ void write_obj(const std::string& path, const Eigen::MatrixXd& positions,
         out << '\n';
     }
     if (texture_coordinates != nullptr) {
-        for (Eigen::Index i = 0; i < texture_coordinates->rows(); ++i)
-            out << "vt " << (*texture_coordinates)(i, 0) << ' ' << (*texture_coordinates)(i, 1)
-                << '\n';
+        for (Eigen::Index i = 0; i < texture_coordinates->rows(); ++i) {
+            out << "vt ";
+            io::write_position(out, *texture_coordinates, i, false);
+            out << '\n';
+        }
     }
     for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
         out << 'f';

@@ -13,7 +13,17 @@ namespace sa {
 
 namespace {
 
-std::filesystem::path executable_folder() {
+/// The folder of the file that holds this code: the program when the library is linked
+/// statically, libsa_geometry.so when it is a shared library.
+std::filesystem::path module_folder() {
+    Dl_info info{};
+    if (dladdr(reinterpret_cast<void*>(&plugin_symbol), &info) != 0 && info.dli_fname != nullptr &&
+        info.dli_fname[0] != '\0') {
+        std::error_code error;
+        const std::filesystem::path file =
+            std::filesystem::canonical(std::filesystem::path(info.dli_fname), error);
+        if (!error) return file.parent_path();
+    }
     std::error_code error;
     const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
     return error ? std::filesystem::path() : exe.parent_path();
@@ -31,7 +41,7 @@ void* plugin_symbol(const std::string& name, const std::string& symbol,
     if (handle == nullptr) {
         std::string message;
         std::vector<std::string> candidates;
-        const std::filesystem::path folder = executable_folder();
+        const std::filesystem::path folder = module_folder();
         if (!folder.empty()) {
             candidates.push_back((folder.parent_path() / "lib" / file).string());
             candidates.push_back((folder / file).string());

@@ -1,16 +1,17 @@
 #pragma once
 // Optional parts of the toolkit that link large libraries (VTK's file formats, VTK's OpenGL
 // rendering, Cairo, OpenMesh) live in shared libraries loaded on first use, so that a command that
-// never touches them does not pay for loading them. Linked into `sa`, VTK and the rest made every
-// process start take 64 ms; without them it took 21 ms (`perf stat -r 10 build/bin/sa --help`),
-// against the 0.1 s a small mapping problem is allowed in all (BENCHMARKS.md), and OpenMesh cost
-// 1.2 ms more.
+// never touches them does not pay for loading them: linked into every program, they made each
+// start several times slower, against the 0.1 s a small mapping problem is allowed in all
+// (BENCHMARKS.md, "Figures moved out of the code").
 //
 // A plugin `lib<name>.so` exports one extern "C" function `symbol` returning a pointer to a
 // table of C++ function pointers (same compiler, same headers: the types cross unchanged, and so
-// do exceptions). It is looked for, in this order, in `<folder of the executable>/../lib/`
-// (build/lib beside build/bin, or an installation's lib/), in the executable's folder, and by the
-// loader's default search (LD_LIBRARY_PATH, the system's folders).
+// do exceptions). It is looked for, in this order, in `<folder>/../lib/` and in `<folder>`, where
+// <folder> holds the file this code is linked into (the program, e.g. build/bin beside build/lib
+// or an installation's bin/ beside its lib/; or libsa_geometry.so when the libraries are shared),
+// then by the loader's search (the calling program's run path, which the installed package's
+// config gives programs linking the static libraries, LD_LIBRARY_PATH, the system's folders).
 
 #include <string>
 

@@ -1,5 +1,6 @@
 #include "geometry/io/write_checks.h"
 
+#include <charconv>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -54,11 +55,17 @@ void check_simplices(const char* function, const char* name, const Eigen::Matrix
     }
 }
 
+void write_number(std::ostream& out, double value) {
+    char text[32];
+    const std::to_chars_result r = std::to_chars(text, text + sizeof text, value);
+    out.write(text, r.ptr - text);
+}
+
 void write_position(std::ostream& out, const Eigen::MatrixXd& positions, Eigen::Index row,
                     bool pad_to_3) {
     for (Eigen::Index j = 0; j < positions.cols(); ++j) {
         if (j > 0) out << ' ';
-        out << positions(row, j);
+        write_number(out, positions(row, j));
     }
     if (pad_to_3) {
         for (Eigen::Index j = positions.cols(); j < 3; ++j) out << " 0";

@@ -1,11 +1,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include "frontends/param/parameterization.h"
 #include "geometry/boundary_fans.h"
+#include "geometry/local_injectivity.h"
 #include "geometry/mesh_generators.h"
 #include "geometry/mesh_topology.h"
 #include "optim/errors.h"
@@ -104,6 +107,41 @@ TEST(Parameterization, OptimalBoundLowersTheLargestDistortion) {
     ASSERT_GE(r.rounds.size(), 2u);
     EXPECT_LT(r.rounds[1].max_distortion, r.rounds[0].max_distortion);
     EXPECT_LE(r.reached_bound, r.rounds[0].max_distortion);
+}
+
+TEST(Parameterization, ABoundedSubmeshRunRemovesBranchPointsOfAFoldedStart) {
+    // The unit square mapped by holomorphic polynomials with a critical point z0 45 or more rings
+    // from the free boundary, beyond m_max: f - f(z0) ~ (z - z0)^tau there, a fold that turns
+    // the loops around it tau times (a discrete branch point). No region whose outer vertices
+    // keep their positions can repair it.
+    const SimplicialMesh mesh = grid_triangles(100, 100);
+    using C = std::complex<double>;
+    const C centre(0.5, 0.5), z0(0.452, 0.503);
+    const std::vector<std::function<C(C)>> maps = {
+        [&](C z) { return (z - centre) - 0.5 / (z0 - centre) * (z - centre) * (z - centre); },
+        [&](C z) { return 4.0 * (z - z0) * (z - z0) * (z - z0); }};
+    for (std::size_t m = 0; m < maps.size(); ++m) {
+        Eigen::MatrixXd start(mesh.num_vertices(), 2);
+        for (Index v = 0; v < mesh.num_vertices(); ++v) {
+            const C f = maps[m](C(mesh.vertices(v, 0), mesh.vertices(v, 1)));
+            start.row(v) << f.real(), f.imag();
+        }
+        ParameterizationOptions options;
+        options.solver.mapping_distortion = DistortionType::kLscm;
+        options.solver.bound = 1.45;
+        options.solver.mode = SolveMode::kSubmesh;
+        const ParameterizationResult r =
+            parameterize(mesh, "square", &start, InitialMap::kLscm, options);
+        SCOPED_TRACE("map " + std::to_string(m) + ": " + r.message);
+        const MeshTopology topology = mesh_topology(mesh, "square");
+        EXPECT_TRUE(r.initial_quality.inverted > 0 ||
+                    !branched_vertices(mesh, topology, start).empty())
+            << "the start should fold";
+        EXPECT_TRUE(r.success);
+        EXPECT_TRUE(r.solve.verification.within_bound());
+        EXPECT_EQ(r.solve.verification.branched, 0);
+        EXPECT_NE(r.solve.submesh.start.find("branch point"), std::string::npos);
+    }
 }
 
 // A flat closed surface with a one-vertex hole and sliver triangles (the class of OptCuts'

@@ -259,5 +259,51 @@ TEST_F(SaCommand, SeamlessWritesAVerifiedMapItsPictureAndRejectsABadField) {
     EXPECT_FALSE(fs::exists(path("bad.png")));
 }
 
+TEST_F(SaCommand, ParamAndSeamlessTakeMaxTimeAsMapDoes) {
+    const SimplicialMesh square = grid_triangles(10, 10);
+    Eigen::MatrixXd lifted(square.num_vertices(), 3);
+    for (Index v = 0; v < square.num_vertices(); ++v) {
+        const double x = square.vertices(v, 0), y = square.vertices(v, 1);
+        lifted.row(v) << x, y, 0.2 * std::sin(4.0 * x) * y;
+    }
+    write_mesh_file(path("bump.off"), lifted, square.simplices);
+    const SimplicialMesh sphere = sphere_triangles(4);
+    write_mesh_file(path("sphere.off"), sphere.vertices, sphere.simplices);
+
+    // A generous limit changes nothing and is reported.
+    const Outcome p = sa("param --mesh " + path("bump.off") + " --max-time 60 --out " +
+                         path("uv.obj") + " --report " + path("uv.json") + " --quiet");
+    ASSERT_EQ(p.status, 0) << p.err;
+    EXPECT_EQ(nlohmann::json::parse(read(path("uv.json")))["options"]["max_time_seconds"], 60.0);
+    const Outcome s = sa("seamless --mesh " + path("sphere.off") + " --max-time 60 --out " +
+                         path("s.obj") + " --report " + path("s.json") + " --no-png --quiet");
+    ASSERT_EQ(s.status, 0) << s.out << s.err;
+    EXPECT_EQ(nlohmann::json::parse(read(path("s.json")))["options"]["max_time_seconds"], 60.0);
+
+    // A limit that runs out: the map reached by then is verified, written and reported, whether
+    // or not it passed (exit 0 or 1, never an error).
+    const Outcome short_param =
+        sa("param --mesh " + path("bump.off") + " --max-time 1e-6 --out " + path("uv-short.obj") +
+           " --report " + path("uv-short.json") + " --quiet");
+    EXPECT_TRUE(short_param.status == 0 || short_param.status == 1) << short_param.err;
+    EXPECT_TRUE(fs::exists(path("uv-short.obj")));
+    EXPECT_TRUE(fs::exists(path("uv-short.json")));
+    const Outcome short_seamless =
+        sa("seamless --mesh " + path("sphere.off") + " --max-time 1e-6 --out " +
+           path("s-short.obj") + " --no-png --no-vtu --quiet");
+    EXPECT_TRUE(short_seamless.status == 0 || short_seamless.status == 1) << short_seamless.err;
+    EXPECT_TRUE(fs::exists(path("s-short.obj")));
+
+    // Not a positive number: one line, exit 2, nothing written.
+    for (const std::string& command :
+         {"param --mesh " + path("bump.off") + " --max-time 0 --out " + path("bad.obj"),
+          "seamless --mesh " + path("sphere.off") + " --max-time -1 --out " + path("bad.obj")}) {
+        const Outcome bad = sa(command);
+        EXPECT_EQ(bad.status, 2) << command;
+        EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+        EXPECT_FALSE(fs::exists(path("bad.obj")));
+    }
+}
+
 }  // namespace
 }  // namespace sa

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "frontends/simplex_assembly/simplex_assembly.h"
@@ -64,6 +65,30 @@ TEST(SimplexAssembly, UntanglesAFolded3DMap) {
     SimplexAssemblyOptions options;
     const SimplexAssemblyResult r = run_simplex_assembly(p, options);
     expect_verified(r, p);
+}
+
+TEST(SimplexAssembly, ABoundaryThatTurnsTwiceIsNotCalledASuccess) {
+    // A disk whose boundary handles go twice around its centre: no inverted triangle is needed,
+    // but every map with this boundary wraps around an interior vertex twice (a branch point).
+    const int n = 16;
+    MappingProblem p;
+    p.mesh.vertices.resize(n + 1, 2);
+    p.mesh.simplices.resize(n, 3);
+    p.initial.resize(n + 1, 2);
+    p.mesh.vertices.row(n) << 0.0, 0.0;
+    p.initial.row(n) << 0.05, 0.0;
+    for (int k = 0; k < n; ++k) {
+        const double a = 2.0 * M_PI * k / n;
+        p.mesh.vertices.row(k) << std::cos(a), std::sin(a);
+        p.initial.row(k) << std::cos(2.0 * a), std::sin(2.0 * a);
+        p.mesh.simplices.row(k) << n, k, (k + 1) % n;
+        p.handles.push_back(k);
+    }
+    const SimplexAssemblyResult r = run_simplex_assembly(p, SimplexAssemblyOptions{});
+    EXPECT_FALSE(r.success) << r.message;
+    EXPECT_EQ(r.verification.inverted, 0) << r.message;
+    EXPECT_EQ(r.verification.branched, 1) << r.message;
+    EXPECT_NE(r.message.find("not locally injective"), std::string::npos) << r.message;
 }
 
 // Each check of handle_feasibility.h stops the run before the first iteration: the logger sees

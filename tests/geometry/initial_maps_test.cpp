@@ -62,6 +62,51 @@ TEST(InitialMaps, LscmReproducesAPlanarMeshUpToASimilarity) {
     EXPECT_LT(quality_of(mesh, uv).conformal.max, 1.0 + 1e-9);
 }
 
+// The gradient of the LSCM energy sum_t area_t |r_t|^2 (r_1 = A00 - A11, r_2 = A10 + A01),
+// assembled triangle by triangle, at uv: #V x 2.
+Eigen::MatrixXd lscm_gradient(const SimplicialMesh& mesh, const Eigen::MatrixXd& uv) {
+    const RestFrames<2> frames = rest_frames<2>(mesh);
+    const std::vector<Mat<2>> A = linear_parts<2>(mesh, frames, uv);
+    Eigen::MatrixXd gradient = Eigen::MatrixXd::Zero(mesh.num_vertices(), 2);
+    for (Index s = 0; s < mesh.num_simplices(); ++s) {
+        const Mat<2>& R = frames.edge_inverse[s];
+        const Eigen::Vector2d g[3] = {-(R.row(0) + R.row(1)).transpose(), R.row(0).transpose(),
+                                      R.row(1).transpose()};
+        const double r1 = A[s](0, 0) - A[s](1, 1), r2 = A[s](1, 0) + A[s](0, 1);
+        for (int k = 0; k < 3; ++k) {
+            // dA00/du_k = g_k.x, dA01/du_k = g_k.y, dA10/dv_k = g_k.x, dA11/dv_k = g_k.y.
+            const Index v = mesh.simplices(s, k);
+            gradient(v, 0) += 2.0 * frames.volume[s] * (r1 * g[k].x() + r2 * g[k].y());
+            gradient(v, 1) += 2.0 * frames.volume[s] * (-r1 * g[k].y() + r2 * g[k].x());
+        }
+    }
+    return gradient;
+}
+
+TEST(InitialMaps, LscmMinimizesTheEnergyAssembledPerTriangle) {
+    // A curved disk with a free boundary: the solution is stationary for the per-triangle energy
+    // at every vertex but the two pins.
+    const SimplicialMesh mesh = bumpy(14);
+    const Eigen::MatrixXd uv = lscm(mesh, mesh_topology(mesh, "bumpy"));
+    const Eigen::MatrixXd gradient = lscm_gradient(mesh, uv);
+    const double scale = gradient.cwiseAbs().maxCoeff();
+    ASSERT_GT(scale, 1e-6);  // the pins hold the map
+    int stationary = 0;
+    for (Index v = 0; v < mesh.num_vertices(); ++v)
+        stationary += gradient.row(v).norm() < 1e-9 * scale;
+    EXPECT_EQ(stationary, mesh.num_vertices() - 2);
+    EXPECT_EQ(quality_of(mesh, uv).inverted, 0);
+
+    // A planar disk listed clockwise: reproduced up to a similarity, orientation kept.
+    SimplicialMesh clockwise = grid_triangles(9, 7);
+    clockwise.vertices.col(1) += 0.2 * clockwise.vertices.col(0).array().square().matrix();
+    clockwise.simplices.col(1).swap(clockwise.simplices.col(2));
+    const Eigen::MatrixXd flat = lscm(clockwise, mesh_topology(clockwise, "clockwise"));
+    const MapQuality q = quality_of(clockwise, flat);
+    EXPECT_EQ(q.inverted, 0);
+    EXPECT_LT(q.conformal.max, 1.0 + 1e-9);
+}
+
 TEST(InitialMaps, BoundaryAngleSumsOfAPlanarGrid) {
     const SimplicialMesh mesh = grid_triangles(5, 4);
     const MeshTopology t = mesh_topology(mesh, "grid");
