@@ -5,14 +5,20 @@ and prints a markdown table: elements, inverted before and after, handle error, 
 delta_iso (max / area-weighted mean), iterations, wall time and peak memory of each run.
 
 Cases:
-  tlc/<name>        the plain-text problem (rest, initial map, handles) as published;
+  tlc/<name>        the plain-text problem (rest, initial map, handles) as published
+                    (armadillo-598: the Locally Injective Mappings benchmark's hard class);
                     tlc/infeasible-star has no solution and must be diagnosed before optimizing
   deform/<name>     the rest shape with only the handle vertices moved to their positions in
                     <name>_init.node (the handles stay at those targets)
   untwist-twisted   deform/untwist with its whole _init.node as the initial map (the handles of
                     untwist do not move, so deform/untwist alone is the rest shape itself)
+  gen/<name>        problems written by build/bin/bench_generate_problem
+                    (geometry/generated_problems.h), feasible by construction: the fixed-boundary
+                    hard class (every boundary vertex a handle at a twisted or bent and flattened
+                    position, the interior tangled) and large deformations by handle slabs
 
-  python3 bench/map_benchmarks.py [--cases tlc,deform] [--timeout 600] [--write BENCHMARKS.md]
+  python3 bench/map_benchmarks.py [--cases tlc,deform,generated] [--timeout 600]
+                                  [--write BENCHMARKS.md]
 
 With --write, the table replaces the section between the markers
 <!-- map-benchmarks:begin --> and <!-- map-benchmarks:end --> of that file, with the command
@@ -31,12 +37,47 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 
 
-def cases(data, which):
+# The generated cases: name, generator arguments, extra sa arguments.
+GENERATED = [
+    ('gen/box-twist-flat', ['--grid', '6', '6', '16', '--deformation', 'twist', '--amount', '2',
+                            '--noise', '1', '--flatten', '0.02', '--seed', '1'], []),
+    ('gen/box-bend-flat', ['--grid', '6', '6', '16', '--deformation', 'bend', '--amount', '2',
+                           '--noise', '1', '--flatten', '0.05', '--seed', '2'], []),
+    ('gen/hand-twist', ['--mesh', '{data}/tet/hand.mesh', '--deformation', 'twist', '--amount', '1',
+                        '--noise', '1', '--seed', '3'], []),
+    ('gen/hand-twist-flat', ['--mesh', '{data}/tet/hand.mesh', '--deformation', 'twist',
+                             '--amount', '1', '--noise', '1', '--flatten', '0.03', '--seed', '4'],
+     []),
+    ('gen/bar-twist-slabs', ['--kind', 'slabs', '--grid', '16', '16', '64', '--deformation', 'twist',
+                             '--amount', '3.14159', '--slab', '0.05'], ['--distortion', 'isometric']),
+    ('gen/bar-bend-slabs', ['--kind', 'slabs', '--grid', '16', '16', '64', '--deformation', 'bend',
+                            '--amount', '3', '--slab', '0.05'], ['--distortion', 'isometric']),
+]
+
+
+def generated_cases(data, generator, work):
+    out = []
+    for name, args, extra in GENERATED:
+        path = os.path.join(work, name.replace('/', '_') + '.txt')
+        if not os.path.exists(path):
+            r = subprocess.run([generator] + [x.format(data=data) for x in args] + ['--out', path],
+                               capture_output=True, text=True)
+            if r.returncode != 0:
+                print('  generator failed for %s: %s' % (name, r.stderr.strip()), file=sys.stderr)
+                continue
+        out.append(dict(name=name, dim=3, args=['--rest', path] + extra, check=['--rest', path]))
+    return out
+
+
+def cases(data, which, generator=None, work=None):
     out = []
     if 'tlc' in which:
-        for name in ['stgc-2d', 'sea-2d', 'param2d', 'cube', 'stgc-3d', 'infeasible-star']:
+        for name in ['stgc-2d', 'sea-2d', 'param2d', 'cube', 'stgc-3d', 'armadillo-598',
+                     'infeasible-star']:
             d = os.path.join(data, 'tlc', name)
-            out.append(dict(name='tlc/' + name, dim=3 if name in ('cube', 'stgc-3d', 'infeasible-star') else 2,
+            out.append(dict(name='tlc/' + name,
+                            dim=3 if name in ('cube', 'stgc-3d', 'armadillo-598',
+                                              'infeasible-star') else 2,
                             args=['--rest', os.path.join(d, 'input')],
                             check=['--rest', os.path.join(d, 'input')]))
     if 'deform' in which:
@@ -52,6 +93,8 @@ def cases(data, which):
                 out.append(dict(name='untwist-twisted', dim=3,
                                 args=['--rest', rest, '--init', init] + common,
                                 check=['--rest', rest, '--targets', init, '--handles', handles]))
+    if 'generated' in which:
+        out += generated_cases(data, generator, work)
     return out
 
 
@@ -114,11 +157,15 @@ def run_case(a, case, variant, work):
         return row
     row['before'] = rep['initial_quality']['inverted']
     row['mode'] = rep.get('mode', 'full')
+    if rep.get('fallback') and 'kept' not in rep['fallback']:
+        row['mode'] += ', then the untangling fallback'
     stage = rep.get('vertex_stage', {}).get('iterations', 0)
     t = rep['times']
     if row['mode'] == 'submesh':
         m = rep['submesh']
         row['iterations'] = '%d in %d solves + %d' % (m['iterations'], m['solves'], stage)
+        if m.get('start_untangle_iterations'):
+            row['iterations'] = 'untangle %d, ' % m['start_untangle_iterations'] + row['iterations']
         row['submesh'] = '%d rounds, %d solves, largest %d, %d rings' % (
             len(m['rounds']), m['solves'], m['largest_submesh'], m['max_rings'])
         row['stages'] = 'start %.2f, regions %.2f, vertex %.2f' % (
@@ -171,7 +218,9 @@ def main():
     ap.add_argument('--sa', default=os.path.join(ROOT, 'build', 'bin', 'sa'))
     ap.add_argument('--data', default=os.path.join(ROOT, '..', 'shared', 'data'))
     ap.add_argument('--checker', default=os.path.join(ROOT, '..', 'shared', 'tools', 'check_map.py'))
-    ap.add_argument('--cases', default='tlc,deform', help='comma-separated: tlc, deform')
+    ap.add_argument('--cases', default='tlc,deform,generated',
+                    help='comma-separated: tlc, deform, generated')
+    ap.add_argument('--generator', default=os.path.join(ROOT, 'build', 'bin', 'bench_generate_problem'))
     ap.add_argument('--only', help='run only the cases whose name contains this text')
     ap.add_argument('--variants', default='default,full,until-valid',
                     help='comma-separated: ' + ', '.join(VARIANTS))
@@ -183,7 +232,8 @@ def main():
     work = tempfile.mkdtemp(prefix='sa-map-bench-')
     output = ''
     for variant in a.variants.split(','):
-        rows = [run_case(a, case, variant, work) for case in cases(a.data, a.cases.split(','))
+        rows = [run_case(a, case, variant, work)
+                for case in cases(a.data, a.cases.split(','), a.generator, work)
                 if not a.only or a.only in case['name']]
         output += '**%s**: %s\n\n%s\n' % (variant, VARIANTS[variant][1], table(rows))
     print(output)

@@ -20,13 +20,23 @@ double signed_volume(const Eigen::MatrixXd& corners) {
 
 /// The rest orientation of simplex s: the sign of its volume when the rest shape has as many
 /// coordinates as the simplex has dimensions, +1 for triangles in space (their own frame).
-double rest_orientation(const SimplicialMesh& mesh, Index s) {
+/// `rest` is the mesh's vertices scaled by power_of_two_scale().
+double rest_orientation(const SimplicialMesh& mesh, const Eigen::MatrixXd& rest, Index s) {
     const int d = mesh.simplex_dimension();
     if (mesh.ambient_dimension() != d) return 1.0;
     Eigen::MatrixXd corners(d, d + 1);
-    for (int k = 0; k <= d; ++k)
-        corners.col(k) = mesh.vertices.row(mesh.simplices(s, k)).transpose();
+    for (int k = 0; k <= d; ++k) corners.col(k) = rest.row(mesh.simplices(s, k)).transpose();
     return signed_volume(corners) < 0.0 ? -1.0 : 1.0;
+}
+
+/// The power of two that brings the largest coefficient of `m` near 1 (1 for an empty, zero or
+/// non-finite `m`): the volumes and distances below neither overflow nor underflow at any scale
+/// (a mesh at 1e200 had every fixed simplex "flat" and every edge "collapsed"), and the scaling
+/// is exact.
+double power_of_two_scale(const Eigen::MatrixXd& m) {
+    const double largest = m.size() > 0 ? m.cwiseAbs().maxCoeff() : 0.0;
+    if (!(largest > 0.0) || !std::isfinite(largest)) return 1.0;
+    return std::ldexp(1.0, -std::ilogb(largest));
 }
 
 template <class List, class Print>
@@ -83,6 +93,9 @@ HandleFeasibility check_handle_feasibility(const SimplicialMesh& mesh,
     HandleFeasibility result;
     const int d = mesh.simplex_dimension();
     if (handles.empty()) return result;
+    const double scale = power_of_two_scale(targets.leftCols(d));
+    const Eigen::MatrixXd scaled = targets.leftCols(d) * scale;
+    const Eigen::MatrixXd rest = mesh.vertices * power_of_two_scale(mesh.vertices);
     // The first target of every handle vertex (its row, -1 for other vertices); repeated entries
     // are compared with it. An array, not a map: every simplex looks its vertices up.
     std::vector<Index> row_of(mesh.num_vertices(), -1);
@@ -93,7 +106,8 @@ HandleFeasibility check_handle_feasibility(const SimplicialMesh& mesh,
             continue;
         }
         const Eigen::RowVectorXd a = targets.row(first).head(d), b = targets.row(k).head(d);
-        if ((a - b).norm() > tolerance) result.conflicts.push_back({handles[k], a, b});
+        if ((scaled.row(first) - scaled.row(k)).norm() > tolerance * scale)
+            result.conflicts.push_back({handles[k], a, b});
     }
 
     // Fixed simplices: signed volumes of their images against the rest orientation.
@@ -105,9 +119,9 @@ HandleFeasibility check_handle_feasibility(const SimplicialMesh& mesh,
         for (int k = 0; k <= d && all; ++k) all = row_of[mesh.simplices(s, k)] >= 0;
         if (!all) continue;
         for (int k = 0; k <= d; ++k)
-            corners.col(k) = targets.row(row_of[mesh.simplices(s, k)]).head(d).transpose();
+            corners.col(k) = scaled.row(row_of[mesh.simplices(s, k)]).transpose();
         fixed.push_back(s);
-        volume.push_back(rest_orientation(mesh, s) * signed_volume(corners));
+        volume.push_back(rest_orientation(mesh, rest, s) * signed_volume(corners));
     }
     result.fixed_simplices = static_cast<Index>(fixed.size());
     double largest = 0.0;
@@ -121,8 +135,8 @@ HandleFeasibility check_handle_feasibility(const SimplicialMesh& mesh,
     }
 
     // Rest edges between handles that share a target.
-    Eigen::RowVectorXd low = targets.leftCols(d).colwise().minCoeff();
-    Eigen::RowVectorXd high = targets.leftCols(d).colwise().maxCoeff();
+    Eigen::RowVectorXd low = scaled.colwise().minCoeff();
+    Eigen::RowVectorXd high = scaled.colwise().maxCoeff();
     const double zero = 1e-14 * (high - low).norm();
     for (Index s = 0; s < mesh.num_simplices(); ++s) {
         for (int a = 0; a <= d; ++a) {
@@ -130,8 +144,7 @@ HandleFeasibility check_handle_feasibility(const SimplicialMesh& mesh,
                 Index u = mesh.simplices(s, a), v = mesh.simplices(s, b);
                 if (u > v) std::swap(u, v);
                 if (row_of[u] < 0 || row_of[v] < 0) continue;
-                if ((targets.row(row_of[u]).head(d) - targets.row(row_of[v]).head(d)).norm() <=
-                    zero)
+                if ((scaled.row(row_of[u]) - scaled.row(row_of[v])).norm() <= zero)
                     result.collapsed_edges.push_back({u, v});
             }
         }

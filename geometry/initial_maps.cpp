@@ -39,13 +39,29 @@ Eigen::MatrixXd circle_boundary(const SimplicialMesh& mesh, const std::vector<In
     return circle;
 }
 
+namespace {
+
+/// `mesh` multiplied by 2^-k, k = scale_exponent(): the initial maps are computed at unit scale
+/// (on a mesh at 1e200 its areas overflowed), with the same bits as at the mesh's own scale.
+SimplicialMesh at_unit_scale(const SimplicialMesh& mesh, int k) {
+    SimplicialMesh scaled = mesh;
+    scaled.vertices = mesh.vertices * std::ldexp(1.0, -k);
+    return scaled;
+}
+
+}  // namespace
+
 Eigen::MatrixXd harmonic_circle(const SimplicialMesh& mesh, const MeshTopology& topology) {
+    if (const int k = scale_exponent(mesh.vertices); k != 0)
+        return harmonic_circle(at_unit_scale(mesh, k), topology);  // on the unit circle anyway
     const std::vector<Index> loop = the_loop(mesh, topology);
     return harmonic_map(mesh, loop, circle_boundary(mesh, loop), LaplacianWeights::kCotangent);
 }
 
 Eigen::MatrixXd tutte_embedding(const SimplicialMesh& mesh, const MeshTopology& topology,
                                 TutteWeights weights) {
+    if (const int k = scale_exponent(mesh.vertices); k != 0)
+        return tutte_embedding(at_unit_scale(mesh, k), topology, weights);  // on the unit circle
     const std::vector<Index> loop = the_loop(mesh, topology);
     const Eigen::MatrixXd circle = circle_boundary(mesh, loop);
     if (weights == TutteWeights::kUniform)
@@ -102,6 +118,8 @@ Eigen::MatrixXd tutte_embedding(const SimplicialMesh& mesh, const MeshTopology& 
 }
 
 Eigen::MatrixXd lscm(const SimplicialMesh& mesh, const MeshTopology& topology) {
+    if (const int k = scale_exponent(mesh.vertices); k != 0)
+        return lscm(at_unit_scale(mesh, k), topology) * std::ldexp(1.0, k);  // in mesh units
     const std::vector<Index> loop = the_loop(mesh, topology);
     // Pins: a boundary vertex farthest from the loop's first vertex, then one farthest from it.
     auto farthest = [&](Index from) {

@@ -10,7 +10,18 @@ namespace sa {
 
 double bounding_box_diagonal(const Eigen::MatrixXd& points) {
     if (points.rows() == 0) return 0.0;
-    return (points.colwise().maxCoeff() - points.colwise().minCoeff()).norm();
+    const Eigen::RowVectorXd extent = points.colwise().maxCoeff() - points.colwise().minCoeff();
+    const double diagonal = extent.norm();
+    // The squares under norm() overflow beyond 1e154 and underflow below 1e-154: scale first
+    // there (stableNorm), and only there, so that other meshes get the same bits as before.
+    if ((diagonal == 0.0 || !std::isfinite(diagonal)) && extent.allFinite())
+        return extent.stableNorm();
+    return diagonal;
+}
+
+int scale_exponent(const Eigen::MatrixXd& points) {
+    const double diagonal = bounding_box_diagonal(points);
+    return diagonal > 0.0 && std::isfinite(diagonal) ? std::ilogb(diagonal) : 0;
 }
 
 void validate_mesh(const SimplicialMesh& mesh, const std::string& source) {
@@ -29,8 +40,13 @@ void validate_mesh(const SimplicialMesh& mesh, const std::string& source) {
             fail("vertex " + std::to_string(v) + " has a non-finite coordinate");
     }
     const double diagonal = bounding_box_diagonal(mesh.vertices);
-    // A simplex is degenerate when its volume is below this fraction of diagonal^d.
-    const double tiny = 1e-14 * std::pow(diagonal, k - 1);
+    if (!std::isfinite(diagonal))
+        fail("the vertices span more than the range of a double (bounding-box diagonal " +
+             std::to_string(diagonal) + ")");
+    // A simplex is degenerate when its volume is below this fraction of diagonal^d. Measured on
+    // edges divided by the diagonal, so that a mesh at any scale in the range of a double gives
+    // the same answer (at 1e200 the cross product overflowed, at 1e-200 it underflowed).
+    const double tiny = 1e-14;
     for (Index s = 0; s < mesh.num_simplices(); ++s) {
         for (int a = 0; a < k; ++a) {
             const int v = mesh.simplices(s, a);
@@ -53,19 +69,23 @@ void validate_mesh(const SimplicialMesh& mesh, const std::string& source) {
             for (int c = 0; c < 3; ++c)
                 e.col(c) = (mesh.vertices.row(mesh.simplices(s, c + 1)) -
                             mesh.vertices.row(mesh.simplices(s, 0)))
-                               .transpose();
+                               .transpose() /
+                           diagonal;
             volume = std::abs(e.determinant()) / 6.0;
         } else {
             Eigen::Vector3d p[3];
             for (int c = 0; c < 3; ++c) {
                 p[c].setZero();
-                p[c].head(dim) = mesh.vertices.row(mesh.simplices(s, c)).transpose();
+                p[c].head(dim) = mesh.vertices.row(mesh.simplices(s, c)).transpose() / diagonal;
             }
             volume = 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm();
         }
         if (!(volume > tiny)) {
-            fail("simplex " + std::to_string(s) + " is degenerate in the rest shape (volume " +
-                 std::to_string(volume) + ")");
+            std::ostringstream msg;
+            msg << "simplex " << s << " is degenerate in the rest shape (volume " << volume
+                << " times the bounding-box diagonal to the power " << k - 1 << ", below " << tiny
+                << ")";
+            fail(msg.str());
         }
     }
 }

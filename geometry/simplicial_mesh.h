@@ -41,4 +41,10 @@ void validate_mesh(const SimplicialMesh& mesh, const std::string& source);
 /// Length of the diagonal of the bounding box of the rows of `points`.
 double bounding_box_diagonal(const Eigen::MatrixXd& points);
 
+/// The exponent k of the power of two nearest below the bounding-box diagonal of `points` (0 when
+/// the diagonal is 0 or not finite): multiplied by 2^-k the points have a diagonal in [1, 2), and
+/// every ratio, angle or linear part computed from them keeps its bits, while areas and volumes
+/// of a mesh at 1e200 or 1e-200 neither overflow nor underflow. Use it to measure in unit scale.
+int scale_exponent(const Eigen::MatrixXd& points);
+
 }  // namespace sa

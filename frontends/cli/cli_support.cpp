@@ -21,6 +21,7 @@ Eigen::MatrixXd read_positions(const std::string& path, Index expected_rows, int
                    [](unsigned char c) { return std::tolower(c); });
     static const std::set<std::string> mesh_extensions = {".obj", ".off",  ".ply",  ".stl", ".vtk",
                                                           ".vtu", ".mesh", ".node", ".ele"};
+    check_input_file(path);
     Eigen::MatrixXd positions;
     if (mesh_extensions.count(ext)) {
         positions = read_mesh_file(path).mesh.vertices;
@@ -71,6 +72,62 @@ void check_output_format(const std::string& path, int dimension) {
             path + ": " + ext +
             " is read, not written; use .vtu, .vtk, .obj, .off, .mesh or .node");
     }
+}
+
+void require_simplices(const SimplicialMesh& mesh, const std::string& path) {
+    if (mesh.num_vertices() == 0) throw InputError(path + ": the mesh has no vertices");
+    if (mesh.num_simplices() == 0)
+        throw InputError(path + ": the mesh has no triangles or tetrahedra");
+}
+
+std::string one_line(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    auto escape = [&out](unsigned char c) {
+        static const char* kHex = "0123456789abcdef";
+        out += "\\x";
+        out.push_back(kHex[c >> 4]);
+        out.push_back(kHex[c & 15]);
+    };
+    for (std::size_t i = 0; i < text.size();) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c == '\n' || c == '\r') {
+            while (i < text.size() && (text[i] == '\n' || text[i] == '\r')) ++i;
+            if (i < text.size() && !out.empty()) out += "; ";
+            continue;
+        }
+        if (c == '\t') {
+            out.push_back(' ');
+            ++i;
+            continue;
+        }
+        if (c < 0x20 || c == 0x7f) {
+            escape(c);
+            ++i;
+            continue;
+        }
+        if (c < 0x80) {
+            out.push_back(static_cast<char>(c));
+            ++i;
+            continue;
+        }
+        // A UTF-8 sequence: a lead byte and its continuation bytes, kept whole when well formed.
+        const int length = c >= 0xf0 && c <= 0xf4  ? 4
+                           : c >= 0xe0             ? 3
+                           : c >= 0xc2 && c < 0xe0 ? 2
+                                                   : 0;
+        bool valid = length > 0 && i + length <= text.size();
+        for (int k = 1; valid && k < length; ++k)
+            valid = (static_cast<unsigned char>(text[i + k]) & 0xc0) == 0x80;
+        if (valid) {
+            out.append(text, i, length);
+            i += length;
+        } else {
+            escape(c);
+            ++i;
+        }
+    }
+    return out;
 }
 
 void check_writable(const std::string& path, bool overwrite) {

@@ -1,15 +1,26 @@
 #pragma once
-// Helpers shared by the `sa` subcommands: reading positions from any supported file, refusing to
-// overwrite outputs unless asked, and the progress logger.
+// Helpers shared by the `sa` subcommands: exit statuses, reading positions from any supported
+// file, checks of the meshes read, messages on one line, and the progress logger.
 
 #include <Eigen/Core>
 #include <string>
 #include <vector>
 
+#include "geometry/simplicial_mesh.h"
+#include "optim/errors.h"
 #include "optim/logger.h"
 #include "optim/types.h"
 
 namespace sa::cli {
+
+/// The command's exit statuses (README.md, "Exit status").
+enum ExitStatus : int {
+    kExitVerified = 0,       ///< the result was verified and written
+    kExitNotVerified = 1,    ///< the result did not pass verification; written, and says so
+    kExitBadInput = 2,       ///< bad input, option or output location: one line, nothing written
+    kExitInternalError = 3,  ///< a bug: one line, nothing written
+    kExitOutOfMemory = 4,    ///< an allocation failed: one line, nothing written
+};
 
 /// Positions from `path`: the vertices of a mesh file (by extension), the `resV` record of a
 /// result file, or the initial block of a plain-text problem. Checks #V rows and keeps the first
@@ -21,8 +32,29 @@ Eigen::MatrixXd read_positions(const std::string& path, Index expected_rows, int
 /// ends in a write that was bound to fail.
 void check_output_format(const std::string& path, int dimension);
 
-/// Throws InputError when `path` exists and `overwrite` is false.
+/// Throws InputError when `path` exists and `overwrite` is false. Only for the commands not yet
+/// registered (deform, polycube): the registered ones check their outputs with OutputPlan.
 void check_writable(const std::string& path, bool overwrite);
+
+/// `parse(value)`, whose InvalidArgumentError gets the option and value in front: "--energy frob:
+/// unknown distortion 'frob' (...)" (the parsers name the value, not the option it came with).
+template <class Parse>
+auto parse_option(const std::string& option, const std::string& value, Parse&& parse)
+    -> decltype(parse(value)) {
+    try {
+        return parse(value);
+    } catch (const InvalidArgumentError& e) {
+        throw InvalidArgumentError(option + " " + value + ": " + e.what());
+    }
+}
+
+/// Throws InputError `PATH: the mesh has no vertices` (or no simplices), naming the file the mesh
+/// was read from, so that later checks (handles, fields) do not blame another file.
+void require_simplices(const SimplicialMesh& mesh, const std::string& path);
+
+/// `text` on one line, printable: line breaks become "; ", other control characters and bytes
+/// that are not UTF-8 become `\xNN`.
+std::string one_line(const std::string& text);
 
 /// The extension of `path` in lower case, with its dot ("" when none).
 std::string extension(const std::string& path);

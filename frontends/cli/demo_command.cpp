@@ -6,6 +6,9 @@
 #include <iostream>
 
 #include "frontends/cli/cli_support.h"
+#include "frontends/cli/option_checks.h"
+#include "frontends/cli/output_plan.h"
+#include "frontends/cli/runtime_settings.h"
 #include "frontends/output/map_output.h"
 #include "frontends/simplex_assembly/simplex_assembly.h"
 #include "geometry/harmonic_map.h"
@@ -24,6 +27,7 @@ CLI::App* add_demo_command(CLI::App& app, DemoArguments& a) {
         ->check(CLI::Range(4, 400))
         ->capture_default_str();
     demo->add_option("--threads", a.threads, "worker threads, 0 = all cores")
+        ->check(integer_at_least(0))
         ->capture_default_str();
     demo->add_flag("--force", a.force, "overwrite existing files in the folder");
     demo->add_flag("--quiet", a.quiet, "no progress rows on stderr");
@@ -71,9 +75,14 @@ int run_demo_command(const DemoArguments& a) {
         (std::filesystem::path(a.out_dir) / "conformal_unbounded.vtu").string();
     const std::string bounded_path =
         (std::filesystem::path(a.out_dir) / "conformal_bound4.vtu").string();
-    std::filesystem::create_directories(a.out_dir);
-    for (const std::string& p : {initial_path, unbounded_path, bounded_path})
-        check_writable(p, a.force);
+    OutputPlan plan(a.force);
+    plan.folder("--out-dir", a.out_dir);
+    plan.file("--out-dir", initial_path);
+    plan.file("--out-dir", unbounded_path);
+    plan.file("--out-dir", bounded_path);
+    plan.check();
+    reserve_blas_buffer();
+    plan.open_folders();
 
     // The square's boundary, counter-clockwise from (0, 0), onto the star by arc length.
     MappingProblem problem;
@@ -94,8 +103,9 @@ int run_demo_command(const DemoArguments& a) {
     const RestFrames<2> frames = rest_frames<2>(problem.mesh);
     const MapQuality initial =
         map_quality<2>(linear_parts<2>(problem.mesh, frames, problem.initial), frames.volume);
-    write_vtu(initial_path, problem.initial, problem.mesh.simplices, {},
-              quality_cell_data(initial));
+    plan.write(initial_path, [&](const std::string& path) {
+        write_vtu(path, problem.initial, problem.mesh.simplices, {}, quality_cell_data(initial));
+    });
 
     std::cout << "sa demo: a " << n << "x" << n << " square grid (" << problem.mesh.num_simplices()
               << " triangles) mapped onto an eight-pointed star; harmonic initial map with "
@@ -114,7 +124,7 @@ int run_demo_command(const DemoArguments& a) {
          {std::pair{kInfinity, unbounded_path}, std::pair{4.0, bounded_path}}) {
         options.bound = bound;
         const SimplexAssemblyResult r = run_simplex_assembly(problem, options, observer);
-        write_map_result(path, problem, r);
+        plan.write(path, [&](const std::string& staged) { write_map_result(staged, problem, r); });
         std::printf("| %s | %ld | %ld | %.3f | %.3f | %d | %.2f | %s |\n",
                     bound < kInfinity ? "4" : "inf", long(r.initial_quality.inverted),
                     long(r.final_quality.inverted), r.final_quality.conformal.max,
@@ -125,12 +135,13 @@ int run_demo_command(const DemoArguments& a) {
         if (!r.success) std::cerr << "sa demo: " << r.message << '\n';
         all = all && r.success;
     }
+    plan.commit();
     std::cout << "\nconformal = sigma_max / sigma_min per triangle; verified = no inverted or "
                  "degenerate triangle and "
                  "every boundary vertex on the star, measured on the output positions.\n"
               << "wrote " << initial_path << ", " << unbounded_path << ", " << bounded_path
               << " (cell data: det_J, conformal, isometric, volumetric, inverted)\n";
-    return all ? 0 : 1;
+    return all ? kExitVerified : kExitNotVerified;
 }
 
 }  // namespace sa::cli

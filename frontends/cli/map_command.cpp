@@ -5,6 +5,10 @@
 #include <optional>
 
 #include "frontends/cli/cli_support.h"
+#include "frontends/cli/option_checks.h"
+#include "frontends/cli/out_of_memory.h"
+#include "frontends/cli/output_plan.h"
+#include "frontends/cli/runtime_settings.h"
 #include "frontends/output/iteration_recorder.h"
 #include "frontends/output/map_output.h"
 #include "frontends/output/map_report.h"
@@ -52,10 +56,15 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
            "--energy", a.energy,
            "mapping energy E_m: none or a distortion (difference = |A - A0|^2 to the initial map)")
         ->capture_default_str();
-    map->add_option("--mu", a.mu, "weight of E_m")->capture_default_str();
-    map->add_option("--s", a.s, "s in the barrier's exp(s d)")->capture_default_str();
+    map->add_option("--mu", a.mu, "weight of E_m")
+        ->check(number_at_least(0.0))
+        ->capture_default_str();
+    map->add_option("--s", a.s, "s in the barrier's exp(s d)")
+        ->check(number_at_least(0.0, true))
+        ->capture_default_str();
     map->add_option("--lambda-max", a.lambda_max,
                     "largest weight of the assembly terms (section 4.4)")
+        ->check(number_at_least(SimplexAssemblyOptions{}.lambda_min))
         ->capture_default_str();
     map->add_option("--variant", a.variant,
                     "r (reduced, default), f (full) or v (vertex variables)")
@@ -65,14 +74,20 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
         "initial linear parts: similarity, rotation, identity, random or bounded:K (the "
         "closest with sigma_max/sigma_min <= K; default: similarity for conformal, rotation "
         "otherwise)");
-    map->add_option("--seed", a.seed, "seed of --initialization random")->capture_default_str();
+    map->add_option("--seed", a.seed, "seed of --initialization random")
+        ->check(integer_at_least(0))
+        ->capture_default_str();
     map->add_option("--max-iterations", a.max_iterations, "Newton iterations at most")
+        ->check(integer_at_least(1))
         ->capture_default_str();
     map->add_option("--max-time", a.max_time,
                     "wall-clock limit in seconds on the solve (checked after each iteration); the "
                     "map reached by then is verified, written and reported as it is")
+        ->check(number_or_inf_at_least(0.0, true))
         ->capture_default_str();
-    map->add_option("--threads", a.threads, "worker threads, 0 = all cores")->capture_default_str();
+    map->add_option("--threads", a.threads, "worker threads, 0 = all cores")
+        ->check(integer_at_least(0))
+        ->capture_default_str();
     map->add_option(
            "--out", a.out,
            "output map: .vtu .vtk .obj .off .mesh .node; other names get result records (resV)")
@@ -84,11 +99,14 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
                     "auto (submeshes for large meshes with few bad simplices), full or submesh")
         ->capture_default_str();
     map->add_option("--rings", a.rings, "submesh mode: rings around the bad simplices (m)")
+        ->check(integer_at_least(1))
         ->capture_default_str();
     map->add_option("--max-rings", a.max_rings,
                     "submesh mode: most rings a failing region grows to (m_max)")
+        ->check(integer_at_least(1))
         ->capture_default_str();
     map->add_option("--max-rounds", a.max_rounds, "submesh mode: rounds after the first (l_max)")
+        ->check(integer_at_least(0))
         ->capture_default_str();
     map->add_option("--linear-solver", a.linear_solver,
                     "auto (Eigen LDL^T below 2e6 factorization flops by CHOLMOD's count, CHOLMOD "
@@ -101,6 +119,7 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
         ->capture_default_str();
     map->add_option("--translation-shift", a.translation_shift,
                     "Hessian shift on r-SA translations, times lambda (the paper's is 1e-6)")
+        ->check(number_at_least(0.0))
         ->capture_default_str();
     map->add_flag(
         "--no-vertex-stage", a.no_vertex_stage,
@@ -129,42 +148,60 @@ std::string format_quality(const MapQuality& q) {
 }  // namespace
 
 int run_map_command(const MapArguments& a) {
-    // Options first: a typo should not cost a solve.
+    // Options and output locations first: a typo should not cost a solve.
     SimplexAssemblyOptions options;
-    options.distortion = parse_distortion(a.distortion);
+    options.distortion = parse_option("--distortion", a.distortion, parse_distortion);
     options.bound = parse_bound(a.bound);
-    if (a.energy != "none") options.mapping_distortion = parse_distortion(a.energy);
+    if (a.energy != "none")
+        options.mapping_distortion = parse_option("--energy", a.energy, parse_distortion);
     options.mu = a.mu;
     options.s = a.s;
     options.lambda_max = a.lambda_max;
     options.vertex_stage = !a.no_vertex_stage;
     options.until_valid = a.until_valid;
-    options.mode = parse_solve_mode(a.mode);
-    options.linear_solver = parse_linear_solver(a.linear_solver);
+    options.mode = parse_option("--mode", a.mode, parse_solve_mode);
+    options.linear_solver = parse_option("--linear-solver", a.linear_solver, parse_linear_solver);
     options.rings = a.rings;
     options.max_rings = a.max_rings;
     options.max_rounds = a.max_rounds;
-    options.projection = parse_projection(a.projection);
+    if (a.max_rings < a.rings) {
+        throw InvalidArgumentError("--max-rings " + std::to_string(a.max_rings) +
+                                   ": must be >= --rings (" + std::to_string(a.rings) + ")");
+    }
+    options.projection = parse_option("--projection", a.projection, parse_projection);
     options.translation_shift = a.translation_shift;
-    options.variant = parse_variant(a.variant);
-    if (!a.initialization.empty()) options.initialization = parse_initialization(a.initialization);
+    options.variant = parse_option("--variant", a.variant, parse_variant);
+    if (!a.initialization.empty())
+        options.initialization =
+            parse_option("--initialization", a.initialization, parse_initialization);
     options.seed = a.seed;
     options.max_iterations = a.max_iterations;
     options.max_time_seconds = a.max_time;
     options.num_threads = a.threads;
     options.validate();
-    check_writable(a.out, a.force);
-    if (!a.report.empty()) check_writable(a.report, a.force);
+    OutputPlan plan(a.force);
+    plan.input("--rest", a.rest);
+    plan.input("--init", a.init);
+    plan.input("--handles", a.handles);
+    plan.input("--targets", a.targets);
+    plan.file("--out", a.out);
+    plan.file("--report", a.report);
+    plan.folder("--record", a.record, {"assembly.pvd"});
+    plan.check();
+    reserve_blas_buffer();
 
+    set_activity("reading --rest " + a.rest);
     MeshFile rest = read_mesh_file(a.rest);
     for (const std::string& warning : rest.warnings)
-        std::cerr << "sa: warning: " << warning << '\n';
+        std::cerr << "sa: warning: " << one_line(warning) << '\n';
+    require_simplices(rest.mesh, a.rest);
     MappingProblem problem;
     problem.source = a.rest;
     problem.mesh = std::move(rest.mesh);
     const int d = problem.mesh.simplex_dimension();
     const Index nv = problem.mesh.num_vertices();
     check_output_format(a.out, d);
+    set_activity("reading --handles " + a.handles);
     problem.handles = a.handles.empty() ? rest.handles : read_index_list(a.handles);
     for (Index h : problem.handles) {
         if (h < 0 || h >= nv) {
@@ -174,6 +211,7 @@ int run_map_command(const MapArguments& a) {
     }
     Eigen::MatrixXd targets;
     if (!a.targets.empty()) {
+        set_activity("reading --targets " + a.targets);
         const Eigen::MatrixXd positions = read_positions(a.targets, nv, d);
         targets.resize(problem.handles.size(), d);
         for (std::size_t k = 0; k < problem.handles.size(); ++k)
@@ -181,6 +219,7 @@ int run_map_command(const MapArguments& a) {
         problem.targets = targets;
     }
     if (!a.init.empty()) {
+        set_activity("reading --init " + a.init);
         problem.initial = read_positions(a.init, nv, d);
     } else if (rest.initial) {
         problem.initial = *rest.initial;
@@ -195,32 +234,56 @@ int run_map_command(const MapArguments& a) {
             "or a --rest file that carries one (a problem file, an OBJ with vt)");
     }
 
+    plan.open_folders();
     std::unique_ptr<IterationRecorder> recorder;
     SimplexAssemblyObserver observer;
     observer.logger = stderr_logger(a.quiet);
     if (!a.record.empty()) {
         recorder = std::make_unique<IterationRecorder>(a.record, problem.mesh, a.force);
-        observer.snapshot = recorder->callback();
+        observer.snapshot = [&recorder](int iteration, const Eigen::MatrixXd& corners) {
+            const auto lock = output_lock();
+            recorder->record(iteration, corners);
+        };
     }
     std::cout << "sa map: " << problem.mesh.num_simplices()
               << (d == 2 ? " triangles" : " tetrahedra") << ", " << nv << " vertices, "
               << problem.handles.size() << " handles (" << a.rest << ")\n";
+    set_activity("solving (Simplex Assembly on " + std::to_string(problem.mesh.num_simplices()) +
+                 (d == 2 ? " triangles)" : " tetrahedra)"));
     std::optional<SimplexAssemblyResult> solved;
     try {
         solved = run_simplex_assembly(problem, options, observer);
     } catch (const InfeasibleProblemError& e) {
         // Nothing was optimized and no map is written: the handles alone rule out a solution.
-        if (!a.report.empty()) write_json(a.report, infeasible_report(problem, e));
-        std::cout << "  INFEASIBLE: " << e.what() << "\n"
+        // The report says why; a --record folder is closed with no frame.
+        set_activity("writing the report");
+        if (!a.report.empty()) {
+            const nlohmann::json report = infeasible_report(problem, e);
+            plan.write(a.report, [&](const std::string& path) { write_json(path, report); });
+        }
+        if (recorder) {
+            const auto lock = output_lock();
+            recorder->finish();
+        }
+        plan.commit();
+        std::cout << "  INFEASIBLE: " << one_line(e.what()) << "\n"
                   << (a.report.empty() ? "" : "  wrote " + a.report + "\n");
-        return 1;
+        return kExitNotVerified;
     }
     const SimplexAssemblyResult& result = *solved;
 
-    write_map_result(a.out, problem, result);
-    if (!a.report.empty()) write_json(a.report, map_report(problem, options, result));
+    set_activity("writing the outputs");
+    plan.write(a.out, [&](const std::string& path) { write_map_result(path, problem, result); });
+    if (!a.report.empty()) {
+        const nlohmann::json report = map_report(problem, options, result);
+        plan.write(a.report, [&](const std::string& path) { write_json(path, report); });
+    }
     std::string series;
-    if (recorder) series = recorder->finish();
+    if (recorder) {
+        const auto lock = output_lock();
+        series = recorder->finish();
+    }
+    plan.commit();
 
     char times[200];
     std::snprintf(
@@ -237,7 +300,7 @@ int run_map_command(const MapArguments& a) {
               << "  " << result.message << "\n"
               << "  wrote " << a.out << (a.report.empty() ? "" : ", " + a.report)
               << (series.empty() ? "" : ", " + series) << "\n";
-    return result.success ? 0 : 1;
+    return result.success ? kExitVerified : kExitNotVerified;
 }
 
 }  // namespace sa::cli

@@ -8,6 +8,10 @@
 
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/map_command.h"
+#include "frontends/cli/option_checks.h"
+#include "frontends/cli/out_of_memory.h"
+#include "frontends/cli/output_plan.h"
+#include "frontends/cli/runtime_settings.h"
 #include "frontends/output/layout_picture.h"
 #include "frontends/output/map_output.h"
 #include "frontends/output/map_report.h"
@@ -47,13 +51,18 @@ CLI::App* add_param_command(CLI::App& app, ParamArguments& a) {
     param->add_flag(
         "--optimal-bound", a.optimal_bound,
         "rounds that take the largest distortion as the next bound until it stops improving (5.1)");
-    param->add_option("--optimal-bound-rounds", a.optimal_bound_rounds,
-                      "most rounds of --optimal-bound (default 10)");
+    param
+        ->add_option("--optimal-bound-rounds", a.optimal_bound_rounds,
+                     "most rounds of --optimal-bound (default 10)")
+        ->check(integer_at_least(1))
+        ->needs("--optimal-bound");
     param
         ->add_option("--energy", a.energy,
                      "E_m: difference (area-weighted |A - A0|^2 to the initial map), lscm, or none")
         ->capture_default_str();
-    param->add_option("--mu", a.mu, "weight of E_m")->capture_default_str();
+    param->add_option("--mu", a.mu, "weight of E_m")
+        ->check(number_at_least(0.0))
+        ->capture_default_str();
     param->add_flag(
         "--free-boundary-injective", a.free_boundary_injective,
         "keep every boundary angle sum below 2 pi (the barrier E_theta of 5.1; full mode)");
@@ -62,8 +71,10 @@ CLI::App* add_param_command(CLI::App& app, ParamArguments& a) {
                     "from a Tutte map)");
     param->add_option("--mode", a.mode, "auto, full or submesh")->capture_default_str();
     param->add_option("--threads", a.threads, "worker threads, 0 = all cores")
+        ->check(integer_at_least(0))
         ->capture_default_str();
     param->add_option("--max-iterations", a.max_iterations, "Newton iterations at most, per stage")
+        ->check(integer_at_least(1))
         ->capture_default_str();
     param
         ->add_option("--max-time", a.max_time,
@@ -88,7 +99,7 @@ int run_param_command(const ParamArguments& a) {
     Stopwatch total;
     ParameterizationOptions options;
     SimplexAssemblyOptions& solver = options.solver;
-    solver.distortion = parse_distortion(a.distortion);
+    solver.distortion = parse_option("--distortion", a.distortion, parse_distortion);
     if (solver.distortion != DistortionType::kConformal &&
         solver.distortion != DistortionType::kIsometric) {
         throw InvalidArgumentError("--distortion " + a.distortion +
@@ -103,7 +114,7 @@ int run_param_command(const ParamArguments& a) {
         throw InvalidArgumentError("--energy " + a.energy + ": expected difference, lscm or none");
     }
     solver.mu = a.mu;
-    solver.mode = parse_solve_mode(a.mode);
+    solver.mode = parse_option("--mode", a.mode, parse_solve_mode);
     solver.num_threads = a.threads;
     solver.max_iterations = a.max_iterations;
     solver.max_time_seconds = a.max_time;
@@ -120,22 +131,31 @@ int run_param_command(const ParamArguments& a) {
     if (!a.layout.empty() && extension(a.layout) != ".vtu" && extension(a.layout) != ".vtk") {
         throw InvalidArgumentError(a.layout + ": the layout is written as .vtu or .vtk");
     }
-    for (const std::string* path : {&a.out, &a.layout, &a.png, &a.report}) {
-        if (!path->empty()) check_writable(*path, a.force);
-    }
+    const bool named =
+        std::find(kInitialMaps.begin(), kInitialMaps.end(), a.init) != kInitialMaps.end();
+    OutputPlan plan(a.force);
+    plan.input("--mesh", a.mesh);
+    if (!named) plan.input("--init", a.init);
+    plan.file("--out", a.out);
+    plan.file("--layout", a.layout);
+    plan.file("--png", a.png);
+    plan.file("--report", a.report);
+    plan.check();
+    reserve_blas_buffer();
 
     Stopwatch stage;
+    set_activity("reading --mesh " + a.mesh);
     MeshFile file = read_mesh_file(a.mesh);
     for (const std::string& warning : file.warnings)
-        std::cerr << "sa: warning: " << warning << '\n';
+        std::cerr << "sa: warning: " << one_line(warning) << '\n';
     const SimplicialMesh& mesh = file.mesh;
+    require_simplices(mesh, a.mesh);
     if (mesh.simplex_dimension() != 2)
         throw InputError(a.mesh + ": a parameterization needs a triangle mesh");
     const double read_time = stage.lap();
     Eigen::MatrixXd given;
-    const bool named =
-        std::find(kInitialMaps.begin(), kInitialMaps.end(), a.init) != kInitialMaps.end();
     if (!named) {
+        set_activity("reading --init " + a.init);
         if (extension(a.init) == ".obj") {
             const MeshFile init = read_mesh_file(a.init);
             if (!init.initial)
@@ -153,26 +173,35 @@ int run_param_command(const ParamArguments& a) {
     observer.logger = stderr_logger(a.quiet);
     std::cout << "sa param: " << mesh.num_simplices() << " triangles, " << mesh.num_vertices()
               << " vertices (" << a.mesh << "), initial map " << a.init << "\n";
+    set_activity("solving (a parameterization of " + std::to_string(mesh.num_simplices()) +
+                 " triangles)");
     const ParameterizationResult r =
         parameterize(mesh, a.mesh, named ? nullptr : &given,
                      named ? parse_initial_map(a.init) : InitialMap::kLscm, options, observer);
     const double solve_time = stage.lap();
 
     // Outputs: the surface with its map, the layout, the picture, the report.
+    set_activity("writing the outputs");
     const MapQuality& q = r.solve.final_quality;
     const std::vector<DataArray> cells = quality_cell_data(q);
     if (out_ext == ".obj") {
-        write_obj(a.out, mesh.vertices, mesh.simplices, &r.uv);
+        plan.write(a.out, [&](const std::string& path) {
+            write_obj(path, mesh.vertices, mesh.simplices, &r.uv);
+        });
     } else {
         Eigen::MatrixXd uv3 = Eigen::MatrixXd::Zero(r.uv.rows(), 3);
         uv3.leftCols(2) = r.uv;
         const std::vector<DataArray> points = {{"uv", uv3}};
-        out_ext == ".vtu" ? write_vtu(a.out, mesh.vertices, mesh.simplices, points, cells)
-                          : write_vtk(a.out, mesh.vertices, mesh.simplices, points, cells);
+        plan.write(a.out, [&](const std::string& path) {
+            out_ext == ".vtu" ? write_vtu(path, mesh.vertices, mesh.simplices, points, cells)
+                              : write_vtk(path, mesh.vertices, mesh.simplices, points, cells);
+        });
     }
     if (!a.layout.empty()) {
-        extension(a.layout) == ".vtu" ? write_vtu(a.layout, r.uv, mesh.simplices, {}, cells)
-                                      : write_vtk(a.layout, r.uv, mesh.simplices, {}, cells);
+        plan.write(a.layout, [&](const std::string& path) {
+            extension(a.layout) == ".vtu" ? write_vtu(path, r.uv, mesh.simplices, {}, cells)
+                                          : write_vtk(path, r.uv, mesh.simplices, {}, cells);
+        });
     }
     if (!a.png.empty()) {
         Eigen::VectorXd values(mesh.num_simplices());
@@ -191,7 +220,9 @@ int run_param_command(const ParamArguments& a) {
         picture.value_name = "conformal distortion (sigma max / sigma min)";
         picture.low = 1.0;
         picture.high = std::max(1.1, std::min(q.conformal.max, 10.0));
-        write_layout_png(a.png, r.uv, mesh.simplices, values, picture, inverted);
+        plan.write(a.png, [&](const std::string& path) {
+            write_layout_png(path, r.uv, mesh.simplices, values, picture, inverted);
+        });
     }
     const double output_time = stage.lap();
     if (!a.report.empty()) {
@@ -255,8 +286,9 @@ int run_param_command(const ParamArguments& a) {
               {"output", output_time},
               {"total", total.seconds()}}},
             {"peak_memory_gb", peak_memory_gb()}};
-        write_json(a.report, report);
+        plan.write(a.report, [&](const std::string& path) { write_json(path, report); });
     }
+    plan.commit();
     char line[512];
     std::snprintf(
         line, sizeof line,
@@ -283,7 +315,7 @@ int run_param_command(const ParamArguments& a) {
     std::cout << line << "  " << r.message << "\n  wrote " << a.out
               << (a.layout.empty() ? "" : ", " + a.layout) << (a.png.empty() ? "" : ", " + a.png)
               << (a.report.empty() ? "" : ", " + a.report) << "\n";
-    return r.success ? 0 : 1;
+    return r.success ? kExitVerified : kExitNotVerified;
 }
 
 CLI::App* add_subdivide_command(CLI::App& app, SubdivideArguments& a) {
@@ -299,12 +331,24 @@ CLI::App* add_subdivide_command(CLI::App& app, SubdivideArguments& a) {
 }
 
 int run_subdivide_command(const SubdivideArguments& a) {
-    check_writable(a.out, a.force);
+    OutputPlan plan(a.force);
+    plan.input("--mesh", a.mesh);
+    plan.file("--out", a.out);
+    plan.check();
     check_output_format(a.out, 2);
+    set_activity("reading --mesh " + a.mesh);
     const MeshFile file = read_mesh_file(a.mesh);
+    require_simplices(file.mesh, a.mesh);
+    if (file.mesh.simplex_dimension() != 2)
+        throw InputError(a.mesh + ": Loop subdivision needs a triangle mesh, not tetrahedra");
     validate_mesh(file.mesh, a.mesh);
+    set_activity("subdividing " + a.mesh + " " + std::to_string(a.levels) + " times");
     const SimplicialMesh out = loop_subdivide(file.mesh, a.levels);
-    write_mesh_file(a.out, out.vertices, out.simplices);
+    set_activity("writing --out " + a.out);
+    plan.write(a.out, [&](const std::string& path) {
+        write_mesh_file(path, out.vertices, out.simplices);
+    });
+    plan.commit();
     std::cout << "sa subdivide: " << file.mesh.num_simplices() << " -> " << out.num_simplices()
               << " triangles, " << out.num_vertices() << " vertices; wrote " << a.out << "\n";
     return 0;

@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 
 #include <cstdlib>
+#include <new>
 
 // jemalloc, the allocator the command links, reads `malloc_conf` when it starts, before main
 // (MALLOC_CONF in the environment can still override it).
@@ -18,15 +19,36 @@
 // The hot loops do not allocate; botijo's default run took the same time with one arena as with
 // jemalloc's eight. (A hook that mapped each growth of that arena populated was measured and
 // dropped: BENCHMARKS.md, "What the sa command does to its own process".)
+#ifndef SA_SYSTEM_ALLOCATOR
 extern "C" {
 // NOLINTNEXTLINE: the name and type are jemalloc's interface.
 const char* malloc_conf = "thp:always,metadata_thp:always,narenas:1,oversize_threshold:0";
 }
+#endif
 
 namespace sa::cli {
+namespace {
+
+bool blas_threads_set_here = false;
+
+// Runs before OpenBLAS's own initialization when OpenBLAS is linked statically (a constructor of
+// priority 101 comes before those without one), which then starts no worker thread. A worker
+// allocates its 128 MB buffer as it starts, and OpenBLAS retries a failed allocation forever:
+// under `ulimit -v` below about 190 MB every command, `sa --version` included, hung at 100% CPU
+// while main waited to join that thread; at 50 MB creating the thread failed and OpenBLAS ended
+// the process. The variable is removed again in main (apply_runtime_settings), so that programs
+// the command starts see the environment they were given.
+__attribute__((constructor(101))) void one_blas_thread() {
+    if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
+    blas_threads_set_here = setenv("OPENBLAS_NUM_THREADS", "1", 0) == 0;
+}
+
+}  // namespace
 
 void apply_runtime_settings() {
-    if (std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
+    if (blas_threads_set_here) unsetenv("OPENBLAS_NUM_THREADS");
+    // A shared OpenBLAS started before that constructor ran: one thread, as below, all the same.
+    if (!blas_threads_set_here && std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;
     // Looked up rather than called: with SA_STATIC_COMMAND off, the BLAS behind CHOLMOD is the
     // one Debian's alternatives choose, which need not be OpenBLAS.
     using SetThreads = void (*)(int);

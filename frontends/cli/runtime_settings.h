@@ -14,4 +14,10 @@ namespace sa::cli {
 /// Laplacian 3.0 -> 2.75 s (all with the supernode relaxation of linear_solver.cpp).
 void apply_runtime_settings();
 
+/// Under a memory limit (ulimit -v or -d), has OpenBLAS take its work buffer now, or throws
+/// std::bad_alloc (the request's size noted, out_of_memory.h) when it cannot be had: OpenBLAS
+/// itself retries a failed allocation forever. For the commands that solve, before they read.
+/// Nothing without a limit, or when the BLAS is not OpenBLAS.
+void reserve_blas_buffer();
+
 }  // namespace sa::cli

@@ -4,21 +4,63 @@
 //   sa param ...  a planar parameterization of a disk-topology surface
 //   sa seamless   a seamless parameterization from a frame field (integrable by Simplex Assembly)
 //   sa subdivide  Loop subdivision (to build large test meshes)
-// Exit status: 0 verified success, 1 a result that did not pass verification or a problem whose
-// handles rule out any solution (geometry/handle_feasibility.h), 2 bad input.
+// Exit status (cli_support.h, README.md): 0 verified success, 1 a result that did not pass
+// verification or a problem whose handles rule out any solution (geometry/handle_feasibility.h),
+// 2 bad input, 3 internal error, 4 out of memory; killed by SIGINT, SIGTERM, SIGHUP or SIGPIPE
+// after removing the run's outputs (interruption.h). Every error is one line on stderr.
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
+#include <new>
+#include <system_error>
 
+#include "frontends/cli/cli_support.h"
 #include "frontends/cli/demo_command.h"
+#include "frontends/cli/interruption.h"
 #include "frontends/cli/map_command.h"
+#include "frontends/cli/out_of_memory.h"
 #include "frontends/cli/param_command.h"
 #include "frontends/cli/runtime_settings.h"
 #include "frontends/cli/seamless_command.h"
 #include "geometry/handle_feasibility.h"
 #include "optim/errors.h"
 
-int main(int argc, char** argv) {
-    sa::cli::apply_runtime_settings();
+namespace {
+
+int report(const char* kind, const std::string& message, int status) {
+    std::cerr << "sa: " << kind << ": " << sa::cli::one_line(message) << '\n' << std::flush;
+    return status;
+}
+
+std::vector<CLI::App*> all_commands(CLI::App& app) {
+    return app.get_subcommands([](CLI::App*) { return true; });
+}
+
+/// "map, demo, param, seamless or subdivide".
+std::string command_list(CLI::App& app) {
+    std::string list;
+    const std::vector<CLI::App*> commands = all_commands(app);
+    for (std::size_t i = 0; i < commands.size(); ++i) {
+        if (i > 0) list += i + 1 == commands.size() ? " or " : ", ";
+        list += commands[i]->get_name();
+    }
+    return list;
+}
+
+/// The summary went to stdout: a write error there (a full disk, /dev/full) is an error too.
+int check_standard_output(int status) {
+    errno = 0;
+    const bool failed = std::fflush(stdout) != 0 || std::ferror(stdout) != 0 || !std::cout;
+    if (!failed) return status;
+    const int reason = errno;
+    const std::string why = reason != 0 ? std::strerror(reason) : "write error";
+    return report("error", "cannot write to standard output (" + why + ")", sa::cli::kExitBadInput);
+}
+
+int run(int argc, char** argv) {
     CLI::App app{"sa: inversion-free mappings by Simplex Assembly (Fu and Liu 2016)"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "sa 0.1.0");
@@ -32,28 +74,63 @@ int main(int argc, char** argv) {
     CLI::App* seamless = sa::cli::add_seamless_command(app, seamless_arguments);
     sa::cli::SubdivideArguments subdivide_arguments;
     CLI::App* subdivide = sa::cli::add_subdivide_command(app, subdivide_arguments);
+
+    // A first word that is no command is an error even with --help after it (CLI11 would print
+    // the main help and succeed), and with no word at all.
+    if (argc < 2) {
+        return report("error", "a command is required: " + command_list(app) + " (sa --help)",
+                      sa::cli::kExitBadInput);
+    }
+    const std::string first = argv[1];
+    const std::vector<CLI::App*> commands = all_commands(app);
+    const bool known = std::any_of(commands.begin(), commands.end(),
+                                   [&](CLI::App* c) { return c->check_name(first); });
+    if (!first.empty() && first[0] != '-' && !known) {
+        return report("error",
+                      "unknown command '" + first + "' (expected " + command_list(app) + ")",
+                      sa::cli::kExitBadInput);
+    }
     try {
         app.parse(argc, argv);
+    } catch (const CLI::Success& e) {  // --help, --version
+        return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        const int code = app.exit(e);
-        return code == 0 ? 0 : 2;
+        return report("error", e.what(), sa::cli::kExitBadInput);
     }
+
     try {
         if (map->parsed()) return sa::cli::run_map_command(map_arguments);
         if (demo->parsed()) return sa::cli::run_demo_command(demo_arguments);
         if (param->parsed()) return sa::cli::run_param_command(param_arguments);
         if (seamless->parsed()) return sa::cli::run_seamless_command(seamless_arguments);
         if (subdivide->parsed()) return sa::cli::run_subdivide_command(subdivide_arguments);
+    } catch (const std::bad_alloc&) {
+        return report("error", sa::cli::out_of_memory_message(), sa::cli::kExitOutOfMemory);
     } catch (const sa::InfeasibleProblemError& e) {
         // A problem with no solution as posed: diagnosed, nothing optimized (exit 1, not 2).
-        std::cerr << "sa: " << e.what() << '\n';
-        return 1;
+        std::cerr << "sa: " << sa::cli::one_line(e.what()) << '\n' << std::flush;
+        return sa::cli::kExitNotVerified;
     } catch (const sa::Error& e) {
-        std::cerr << "sa: error: " << e.what() << '\n';
-        return 2;
+        return report("error", e.what(), sa::cli::kExitBadInput);
+    } catch (const std::system_error& e) {
+        // A thread that cannot start for lack of address space (TBB's, with 8 MB stacks).
+        const int code = e.code().value();
+        if (e.code().category() == std::generic_category() && (code == EAGAIN || code == ENOMEM) &&
+            sa::cli::memory_limit() > 0) {
+            return report("error", sa::cli::out_of_memory_message() + " (" + e.what() + ")",
+                          sa::cli::kExitOutOfMemory);
+        }
+        return report("internal error", e.what(), sa::cli::kExitInternalError);
     } catch (const std::exception& e) {
-        std::cerr << "sa: internal error: " << e.what() << '\n';
-        return 3;
+        return report("internal error", e.what(), sa::cli::kExitInternalError);
     }
-    return 2;
+    return report("error", "a command is required: " + command_list(app), sa::cli::kExitBadInput);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    sa::cli::apply_runtime_settings();
+    sa::cli::install_interruption_handling();
+    return check_standard_output(run(argc, argv));
 }

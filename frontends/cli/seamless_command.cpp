@@ -7,6 +7,10 @@
 #include <sstream>
 
 #include "frontends/cli/cli_support.h"
+#include "frontends/cli/option_checks.h"
+#include "frontends/cli/out_of_memory.h"
+#include "frontends/cli/output_plan.h"
+#include "frontends/cli/runtime_settings.h"
 #include "frontends/output/checkerboard_picture.h"
 #include "frontends/output/map_output.h"
 #include "frontends/output/map_report.h"
@@ -16,6 +20,7 @@
 #include "geometry/io/mesh_file.h"
 #include "geometry/io/obj_io.h"
 #include "geometry/io/vtk_io.h"
+#include "geometry/mesh_topology.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
 
@@ -89,10 +94,16 @@ CLI::App* add_seamless_command(CLI::App& app, SeamlessArguments& a) {
         ->expected(2);
     cmd->add_option("--scale", a.scale,
                     "H: mesh length per unit of (u, v), one checkerboard square (default: 1/30 of "
-                    "the bounding-box diagonal)");
-    cmd->add_option("--mu", a.mu, "weight of E_m = |phi' - phi|^2")->capture_default_str();
-    cmd->add_option("--threads", a.threads, "worker threads, 0 = all cores")->capture_default_str();
+                    "the bounding-box diagonal)")
+        ->check(number_at_least(0.0, true));
+    cmd->add_option("--mu", a.mu, "weight of E_m = |phi' - phi|^2")
+        ->check(number_at_least(0.0))
+        ->capture_default_str();
+    cmd->add_option("--threads", a.threads, "worker threads, 0 = all cores")
+        ->check(integer_at_least(0))
+        ->capture_default_str();
     cmd->add_option("--max-iterations", a.max_iterations, "Newton iterations at most")
+        ->check(integer_at_least(1))
         ->capture_default_str();
     cmd->add_option("--max-time", a.max_time,
                     "wall-clock limit in seconds on the whole run (the field's assembly and its "
@@ -127,9 +138,16 @@ int run_seamless_command(const SeamlessArguments& a) {
         throw InvalidArgumentError(vtu + ": --vtu takes a .vtu file");
     if (!png.empty() && extension(png) != ".png")
         throw InvalidArgumentError(png + ": --png takes a .png file");
-    for (const std::string* path : {&a.out, &vtu, &png, &a.report}) {
-        if (!path->empty()) check_writable(*path, a.force);
-    }
+    OutputPlan plan(a.force);
+    plan.input("--mesh", a.mesh);
+    plan.input("--field", a.field);
+    for (const std::string& constraint : a.constraints) plan.input("--constraints", constraint);
+    plan.file("--out", a.out);
+    plan.file(a.vtu.empty() ? "--vtu (from --out)" : "--vtu", vtu);
+    plan.file(a.png.empty() ? "--png (from --out)" : "--png", png);
+    plan.file("--report", a.report);
+    plan.check();
+    reserve_blas_buffer();
     SeamlessOptions options;
     options.scale = a.scale;
     options.integrable.mu = a.mu;
@@ -138,17 +156,23 @@ int run_seamless_command(const SeamlessArguments& a) {
     if (!(a.max_time > 0.0))
         throw InvalidArgumentError("--max-time " + std::to_string(a.max_time) + ": expected > 0");
     options.integrable.max_time_seconds = a.max_time;
-    if (a.scale < 0.0) throw InvalidArgumentError("--scale must be > 0");
 
+    set_activity("reading --mesh " + a.mesh);
     MeshFile file = read_mesh_file(a.mesh);
     for (const std::string& warning : file.warnings)
-        std::cerr << "sa: warning: " << warning << '\n';
+        std::cerr << "sa: warning: " << one_line(warning) << '\n';
     const SimplicialMesh& mesh = file.mesh;
+    require_simplices(mesh, a.mesh);
     if (mesh.simplex_dimension() != 2)
         throw InputError(a.mesh + ": seamless parameterization needs a triangle mesh");
+    // The checks the pipeline makes, here with the file's name: a valid, manifold and
+    // consistently oriented surface.
+    validate_mesh(mesh, a.mesh);
+    mesh_topology(mesh, a.mesh);
     std::optional<FrameFieldInput> field;
     std::string field_layout;
     if (!a.field.empty() || !a.constraints.empty()) {
+        set_activity("reading the field");
         const FrameFieldFile f = a.field.empty()
                                      ? read_frame_field_constraints(
                                            a.constraints[0], a.constraints[1], mesh.num_simplices())
@@ -161,6 +185,8 @@ int run_seamless_command(const SeamlessArguments& a) {
     std::cout << "sa seamless: " << mesh.num_simplices() << " triangles, " << mesh.num_vertices()
               << " vertices (" << a.mesh << ")"
               << (field_layout.empty() ? "" : ", field: " + field_layout) << "\n";
+    set_activity("solving (a seamless parameterization of " + std::to_string(mesh.num_simplices()) +
+                 " triangles)");
     const SeamlessResult r =
         seamless_parameterization(mesh, field, options, stderr_logger(a.quiet));
     stage.lap();
@@ -185,10 +211,14 @@ int run_seamless_command(const SeamlessArguments& a) {
         return 1;
     }
 
+    set_activity("writing the outputs");
     const CutMesh& cut = r.result.map.cut;
     Eigen::MatrixXd positions = mesh.vertices;
-    write_obj(a.out, positions, mesh.simplices, &r.result.map.uv, &cut.mesh.simplices);
-    if (!vtu.empty()) write_seamless_vtu(vtu, mesh, r);
+    plan.write(a.out, [&](const std::string& path) {
+        write_obj(path, positions, mesh.simplices, &r.result.map.uv, &cut.mesh.simplices);
+    });
+    if (!vtu.empty())
+        plan.write(vtu, [&](const std::string& path) { write_seamless_vtu(path, mesh, r); });
     if (!png.empty()) {
         Eigen::MatrixXd cut_positions(cut.mesh.num_vertices(), mesh.vertices.cols());
         for (Index c = 0; c < cut.mesh.num_vertices(); ++c)
@@ -200,7 +230,10 @@ int run_seamless_command(const SeamlessArguments& a) {
                       r.singularities_after.size(), long(r.result.quality.inverted),
                       r.success ? "" : " (FAILED)");
         picture.title = title;
-        write_checkerboard_png(png, cut_positions, cut.mesh.simplices, r.result.map.uv, picture);
+        plan.write(png, [&](const std::string& path) {
+            write_checkerboard_png(path, cut_positions, cut.mesh.simplices, r.result.map.uv,
+                                   picture);
+        });
     }
     const double output_time = stage.lap();
     if (!a.report.empty()) {
@@ -276,8 +309,9 @@ int run_seamless_command(const SeamlessArguments& a) {
               {"output", output_time},
               {"total", total.seconds()}}},
             {"peak_memory_gb", peak_memory_gb()}};
-        write_json(a.report, report);
+        plan.write(a.report, [&](const std::string& path) { write_json(path, report); });
     }
+    plan.commit();
     std::ostringstream singular;  // the first few, "vertex (index)"
     for (std::size_t i = 0; i < r.singularities_before.size() && i < 8; ++i) {
         singular << (i ? ", " : " at vertices ") << r.singularities_before[i].vertex << " ("
@@ -303,7 +337,7 @@ int run_seamless_command(const SeamlessArguments& a) {
     std::cout << line << "  " << r.message << "\n  wrote " << a.out
               << (vtu.empty() ? "" : ", " + vtu) << (png.empty() ? "" : ", " + png)
               << (a.report.empty() ? "" : ", " + a.report) << "\n";
-    return r.success ? 0 : 1;
+    return r.success ? kExitVerified : kExitNotVerified;
 }
 
 }  // namespace sa::cli

@@ -122,6 +122,8 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
             {"start_bad", m.start_bad},
             {"start_iterations", m.start_iterations},
             {"start_rejected", m.start_rejected},
+            {"start_untangle_iterations", m.start_untangle_iterations},
+            {"start_untangle", m.start_untangle},
             {"rounds", rounds},
             {"solves", m.solves},
             {"iterations", m.iterations},
@@ -149,6 +151,7 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
                               {"initial_energy", r.vertex_stage.initial_energy},
                               {"final_energy", r.vertex_stage.final_energy},
                               {"termination", to_string(r.vertex_stage.termination)}};
+    report["fallback"] = r.fallback;
     nlohmann::json iterations = nlohmann::json::array();
     for (std::size_t k = 0; k < r.iterations.size(); ++k) {
         const AssemblyRecord& a = r.iterations[k];

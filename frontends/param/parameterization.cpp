@@ -79,6 +79,8 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
         result.initial_uv;  // E_m measures the change from the initial map in every round
     problem.boundary_injective = options.free_boundary_injective;
     SimplexAssemblyOptions solver = options.solver;
+    // The parameterization's own last resort is the Tutte start below (start_fallback.h).
+    solver.untangle_fallback = false;
     // A submesh round repairs only the simplices at the bound and stalls at the initial map's
     // maximum (camelhead: delta_con 5.96 against 1.83 in the full mode): the rounds of the optimal
     // bound move the whole mesh unless the caller forces the submesh mode.

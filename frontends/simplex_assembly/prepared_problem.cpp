@@ -1,6 +1,8 @@
 #include "frontends/simplex_assembly/prepared_problem.h"
 
+#include <cmath>
 #include <set>
+#include <sstream>
 
 #include "energies/boundary_angle_energy.h"
 #include "energies/distortion.h"
@@ -112,6 +114,32 @@ void check_input(const MappingProblem& p, const SimplexAssemblyOptions& options,
     }
 }
 
+/// Coordinates that are finite but near the largest double overflow in the initial map's affine
+/// parts (a 1e308 on a free vertex made the solve run and write -inf): an InputError naming the
+/// simplex and its vertices, before anything is solved. `A` are the linear parts, `start` the
+/// normalized positions whose centroids are the translations.
+template <int D>
+void check_finite_affine_parts(const MappingProblem& input, const std::vector<Mat<D>>& A,
+                               const Eigen::MatrixXd& start) {
+    for (Index s = 0; s < Index(A.size()); ++s) {
+        Vec<D> centroid = Vec<D>::Zero();
+        for (int k = 0; k <= D; ++k) centroid += start.row(input.mesh.simplices(s, k)).transpose();
+        if (A[s].allFinite() && centroid.allFinite()) continue;
+        std::ostringstream msg;
+        msg << input.source << ": the initial map's affine part of simplex " << s
+            << " is not finite (its vertices";
+        double largest = 0.0;
+        for (int k = 0; k <= D; ++k) {
+            const Index v = input.mesh.simplices(s, k);
+            msg << (k ? ", " : " ") << v;
+            largest = std::max(largest, input.initial.row(v).head(D).cwiseAbs().maxCoeff());
+        }
+        msg << " have coordinates up to " << largest
+            << "): the map's coordinates overflow; scale the map down";
+        throw InputError(msg.str());
+    }
+}
+
 /// What the handles alone decide (handle_feasibility.h): throws InfeasibleProblemError before
 /// anything is optimized when they force an inverted or flat simplex, fix a vertex at two places
 /// or collapse a rest edge; a vertex listed twice at one place is a malformed list (InputError).
@@ -215,6 +243,7 @@ std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
     in.topology = &p->topology;
     in.frames = &p->frames;
     in.start_linear = linear_parts<D>(p->mesh, p->frames, p->start);
+    check_finite_affine_parts<D>(input, in.start_linear, p->start);
     p->initial_quality = map_quality<D>(in.start_linear, p->frames.volume);
     in.reference_linear =
         input.reference.size() > 0
@@ -270,12 +299,12 @@ std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
         }
     }
     if (options.builtin_energy) {
-        in.energies.push_back(simplex_term<D>(
-            "simplex energy",
-            SimplexEnergy<D>(simplex_energy_options(options), p->frames.volume,
-                             options.mapping_distortion == DistortionType::kDifference
-                                 ? in.reference_linear
-                                 : std::vector<Mat<D>>{})));
+        p->energy = std::make_shared<const SimplexEnergy<D>>(
+            simplex_energy_options(options), p->frames.volume,
+            options.mapping_distortion == DistortionType::kDifference ? in.reference_linear
+                                                                      : std::vector<Mat<D>>{});
+        in.energies.push_back(
+            std::make_shared<SimplexTermOf<D, SimplexEnergy<D>>>("simplex energy", p->energy));
     }
     for (const auto& energy : input.energies)
         in.energies.push_back(std::static_pointer_cast<const SimplexTerm<D>>(energy));
@@ -314,8 +343,15 @@ template <int D>
 void verify_result(const MappingProblem& input, const SimplexAssemblyOptions& options,
                    SimplexAssemblyResult& result, const MeshTopology* topology) {
     const SimplicialMesh& original = input.mesh;
-    const RestFrames<D> rest = rest_frames<D>(original);
-    const std::vector<Mat<D>> out = linear_parts<D>(original, rest, result.positions);
+    // Measured on both sides scaled by the power of two nearest the rest diagonal's inverse:
+    // the linear parts keep every bit, and volumes neither overflow nor underflow on a mesh at
+    // 1e200 or 1e-200 (in original units every simplex was reported degenerate there).
+    const double unit = std::ldexp(1.0, -scale_exponent(original.vertices));
+    SimplicialMesh scaled = original;
+    scaled.vertices *= unit;
+    const RestFrames<D> rest = rest_frames<D>(scaled);
+    const std::vector<Mat<D>> out =
+        linear_parts<D>(scaled, rest, Eigen::MatrixXd(result.positions * unit));
     result.final_quality = map_quality<D>(out, rest.volume);
     Verification& v = result.verification;
     v = Verification{};

@@ -6,6 +6,7 @@
 
 #include <memory>
 
+#include "energies/simplex_energy.h"
 #include "frontends/simplex_assembly/assembly_problem.h"
 #include "frontends/simplex_assembly/simplex_assembly.h"
 #include "geometry/mesh_topology.h"
@@ -26,6 +27,9 @@ struct PreparedProblem {
     Eigen::MatrixXd target_rows;    ///< #handles x D, original units
     Eigen::MatrixXd start;          ///< the initial map, normalized
     AssemblyInput<D> assembly;      ///< disassembled; its pointers refer to this object
+    /// The options' built-in mu E_m + E_C (also the first of assembly.energies); null with
+    /// builtin_energy = false. forced_distortion.h measures its barrier's distortion.
+    std::shared_ptr<const SimplexEnergy<D>> energy;
     MapQuality initial_quality;
     /// Eq. 6 with the handles at their targets and the first vertex of every anchored simplex
     /// at its image (`pinned`, normalized; `recovery_fixed` marks those vertices).

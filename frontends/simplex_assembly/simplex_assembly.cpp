@@ -1,11 +1,13 @@
 #include "frontends/simplex_assembly/simplex_assembly.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
 #include "frontends/simplex_assembly/prepared_problem.h"
 #include "frontends/simplex_assembly/submesh_assembly.h"
+#include "frontends/simplex_assembly/untangle_fallback.h"
 #include "frontends/simplex_assembly/vertex_stage.h"
 #include "geometry/translation_gluing.h"
 #include "optim/errors.h"
@@ -54,6 +56,45 @@ std::string SubmeshStats::describe() const {
 }
 
 namespace {
+
+/// When the assembly ended on a recovered mesh the vertex stage cannot start from (an inverted
+/// simplex, one over the bound), the initial map with its handles at their targets is the other
+/// candidate, as in the submesh mode's start: the vertex stage runs from it when its energy is
+/// finite; when it is not (a distortion whose barrier e^{s d} overflows, a handle moved 1e6 away
+/// from a fixed boundary) but it is inversion-free and no bound is set, it is kept as it is. On
+/// a 3 x 3 grid with its boundary fixed and a corner moved to (30, 30) the assembly stalled at
+/// lambda_max with an inverted triangle (e^{58} against lambda_max = 1e16) although the initial
+/// map was a solution. `recovered` and `vertex` are replaced only when the candidate is used.
+template <int D>
+void start_from_initial_map(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& options,
+                            const TimeBudget& budget, const SimplexAssemblyObserver& observer,
+                            const std::vector<unsigned char>& fixed, Eigen::MatrixXd& recovered,
+                            VertexStage& vertex) {
+    const AssemblyInput<D>& in = prepared.assembly;
+    Eigen::MatrixXd candidate = prepared.start;
+    for (std::size_t k = 0; k < in.handles.size(); ++k)
+        candidate.row(in.handles[k]) = in.targets[k].transpose();
+    VertexStage from_initial =
+        run_vertex_stage<D>(prepared.mesh, prepared.frames, in.energies, candidate, fixed,
+                            with_time_left(options, budget), observer.logger,
+                            VertexStageTerms<D>{in.fans, in.constraints});
+    if (from_initial.ran) {
+        from_initial.note += " (from the initial map: the assembly's recovered mesh was not valid)";
+        recovered = from_initial.positions;
+        vertex = std::move(from_initial);
+        return;
+    }
+    if (options.bound < kInfinity || !in.fans.empty() || !in.constraints.empty()) return;
+    for (const auto& energy : in.energies)
+        if (energy->bounds_a_distortion() && energy->bound() < kInfinity) return;
+    const MapQuality q = map_quality<D>(linear_parts<D>(prepared.mesh, prepared.frames, candidate),
+                                        prepared.frames.volume);
+    if (q.inverted > 0 || q.degenerate > 0) return;
+    recovered = candidate;
+    vertex.positions = candidate;
+    vertex.note +=
+        "; the initial map, inversion-free but beyond what the barrier represents, is kept";
+}
 
 /// The whole mesh at once: the engine (its lambda schedule, section 4.4) with the hand-over of
 /// Eq. 6 as its hook, recovery, and the vertex stage. Fills positions (original units) and the
@@ -141,6 +182,9 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
         VertexStage vertex = run_vertex_stage<D>(mesh, frames, in.energies, recovered, fixed,
                                                  with_time_left(options, budget), observer.logger,
                                                  VertexStageTerms<D>{in.fans, in.constraints});
+        if (!vertex.ran)
+            start_from_initial_map<D>(prepared, options, budget, observer, fixed, recovered,
+                                      vertex);
         result.vertex_stage_ran = vertex.ran;
         result.vertex_stage_note = vertex.note;
         result.vertex_stage = vertex.newton;
@@ -148,6 +192,25 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
         result.times.vertex_stage += stage.lap();
     }
     result.positions = prepared.to_original(recovered);
+}
+
+/// The options with the Hessian projection's clamp at the map's scale. The clamp is absolute,
+/// while the barrier's Hessian (in the linear parts or in the positions, the rest normalized to
+/// a unit diagonal) scales as 1/c^2 with the map's size c: with a handle moved to (1e6, 1e6)
+/// every eigenvalue fell under the clamp and Newton crawled (conformal distortion 3.47 after 200
+/// iterations where a similarity, 1, is the answer). It is scaled by the power of 4 nearest
+/// 1/c^2, so that a map gets the clamp it would have at unit scale; maps of the rest's size (c
+/// in [0.71, 1.41)) keep it unchanged. `pinned` is the normalized initial map with its handles at
+/// their targets.
+SimplexAssemblyOptions at_map_scale(const SimplexAssemblyOptions& options,
+                                    const Eigen::MatrixXd& pinned) {
+    SimplexAssemblyOptions scaled = options;
+    const double c = bounding_box_diagonal(pinned);
+    if (c > 0.0 && std::isfinite(c)) {
+        const long k = std::lround(std::log2(c));
+        scaled.projection_epsilon = std::ldexp(options.projection_epsilon, int(-2 * k));
+    }
+    return scaled;
 }
 
 template <int D>
@@ -159,10 +222,11 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
     std::unique_ptr<PreparedProblem<D>> prepared = prepare_problem<D>(input, options, result.times);
     result.initial_quality = prepared->initial_quality;
     result.mode = choose_mode<D>(*prepared, options);
+    const SimplexAssemblyOptions solve_options = at_map_scale(options, prepared->pinned);
     if (result.mode == SolveMode::kSubmesh) {
-        solve_submeshes<D>(*prepared, options, budget, observer, result);
+        solve_submeshes<D>(*prepared, solve_options, budget, observer, result);
     } else {
-        solve_full<D>(*prepared, options, budget, observer, result);
+        solve_full<D>(*prepared, solve_options, budget, observer, result);
     }
     for (Index v = 0; v < input.mesh.num_vertices(); ++v) {
         if (!prepared->topology.used_vertex[v])
@@ -170,6 +234,16 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
     }
     Stopwatch stage;
     verify_result<D>(input, options, result, &prepared->topology);
+    // The last resort (untangle_fallback.h): no valid map, but the handles are where they belong.
+    if (!result.success && options.untangle_fallback &&
+        result.verification.handle_error <= result.verification.handle_tolerance &&
+        untangle_fallback<D>(*prepared, options, budget, observer, result)) {
+        for (Index v = 0; v < input.mesh.num_vertices(); ++v) {
+            if (!prepared->topology.used_vertex[v])
+                result.positions.row(v) = prepared->initial_map.row(v);
+        }
+        verify_result<D>(input, options, result, &prepared->topology);
+    }
     if (!prepared->assembly.fans.empty()) {
         result.boundary_violations_before =
             count_boundary_violations(prepared->assembly.fans, prepared->initial_map);
@@ -200,6 +274,7 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
             message << "; vertex stage " << result.vertex_stage_note;
         }
     }
+    if (!result.fallback.empty()) message << ". Then " << result.fallback;
     message << ".";
     result.message = message.str();
     result.times.verification += stage.lap();

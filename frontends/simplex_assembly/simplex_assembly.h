@@ -133,7 +133,11 @@ struct SubmeshStats {
     std::string start;         ///< which iterate of the start ("initial map", "M^0 (Eq. 6)", ...)
     int start_iterations = 0;  ///< local/global iterations run after M^0
     int start_rejected = 0;    ///< accelerated points among them replaced by plain steps
-    Index start_bad = 0;       ///< bad simplices of the start
+    /// Newton steps of the untangling after them (untangle.h; 0 when it did not run) and how it
+    /// ended.
+    int start_untangle_iterations = 0;
+    std::string start_untangle;
+    Index start_bad = 0;  ///< bad simplices of the start
     std::vector<SubmeshRound> rounds;
     Index solves = 0;           ///< submesh solves, retries included
     Index iterations = 0;       ///< Newton steps summed over them
@@ -167,6 +171,9 @@ struct SimplexAssemblyResult {
     bool vertex_stage_ran = false;  ///< the vertex stage ran
     std::string vertex_stage_note;  ///< how it ended, or why it did not run
     NewtonSummary vertex_stage;     ///< the vertex stage (empty when it did not run)
+    /// What the last resort did when the run ended without a valid map (untangle_fallback.h;
+    /// empty when it did not run).
+    std::string fallback;
     StageTimes times;
     Index num_variables = 0;
     Index num_translation_simplices = 0;  ///< |Omega_s| for r-SA, N for f-SA

@@ -121,6 +121,10 @@ struct SimplexAssemblyOptions {
     /// tetrahedron's 9 variables couple with its 4 neighbours: the full 3D system costs far more),
     /// and for meshes whose initial map has more than `auto_bad_share` inverted or degenerate
     /// simplices; the submesh mode otherwise.
+    /// A run that ends without a valid map, its handles in place and time left, is untangled in
+    /// vertex variables and finished by the vertex stage (untangle_fallback.h). Front-ends with a
+    /// last resort of their own (param's Tutte start, start_fallback.h) turn it off.
+    bool untangle_fallback = true;
     Index auto_full_triangles = 20000;
     Index auto_full_tetrahedra = 1000;
     double auto_bad_share = 0.25;

@@ -27,8 +27,10 @@
 #include <memory>
 #include <numeric>
 #include <string>
+#include <type_traits>
 #include <vector>
 
+#include "energies/barrier.h"
 #include "energies/reindexed_energy.h"
 #include "energies/vertex_copy_energies.h"
 #include "frontends/simplex_assembly/engine.h"
@@ -82,6 +84,9 @@ class SimplexTerm : public SimplexTermBase {
     virtual double bound() const { return kInfinity; }
     /// Its largest distortion over A (+inf where det A <= 0); 0 for other energies.
     virtual double max_distortion(const std::vector<Mat<D>>&) const { return 0.0; }
+    /// Whether the barrier's e^{s d} at A is beyond barrier.h's exponent cap, where it no longer
+    /// ranks the other simplices (the built-in SimplexEnergy; false for other energies).
+    virtual bool beyond_exponent_cap(const Mat<D>&) const { return false; }
     /// The same barrier with bound K; throws InvalidArgumentError for other energies.
     virtual std::shared_ptr<const SimplexTerm<D>> with_bound(double) const {
         throw InvalidArgumentError(name() + ": not a barrier on a distortion, it has no bound");
@@ -164,6 +169,14 @@ class SimplexTermOf final : public SimplexTerm<D> {
                 [](double a, double b) { return std::max(a, b); });
         } else {
             return 0.0;
+        }
+    }
+    bool beyond_exponent_cap(const Mat<D>& A) const override {
+        if constexpr (std::is_same_v<E, SimplexEnergy<D>>) {
+            return energy_->options().barrier.s * energy_->barrier_distortion(A) >
+                   kBarrierExponentCap;
+        } else {
+            return false;
         }
     }
     std::shared_ptr<const SimplexTerm<D>> with_bound(double K) const override {

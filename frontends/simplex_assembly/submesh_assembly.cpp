@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "energies/distortion.h"
+#include "frontends/simplex_assembly/forced_distortion.h"
 #include "frontends/simplex_assembly/submesh_start.h"
 #include "frontends/simplex_assembly/vertex_stage.h"
 #include "geometry/handle_feasibility.h"
@@ -23,9 +24,11 @@ namespace {
 
 /// bad_simplices() of `positions` (original units).
 template <int D>
-std::vector<Index> bad_simplices_at(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions) {
+std::vector<Index> bad_simplices_at(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions,
+                                    bool beyond_cap_allowed) {
     return bad_simplices<D>(
-        p, linear_parts<D>(p.mesh, p.frames, (positions.rowwise() - p.map_center) * p.scale));
+        p, linear_parts<D>(p.mesh, p.frames, (positions.rowwise() - p.map_center) * p.scale),
+        beyond_cap_allowed);
 }
 
 struct Region {
@@ -104,6 +107,9 @@ SolveMode choose_mode(const PreparedProblem<D>& p, const SimplexAssemblyOptions&
         return SolveMode::kFull;
     }
     if (options.mode != SolveMode::kAuto) return options.mode;
+    // Handles that force the barrier beyond what lambda_max can balance (forced_distortion.h):
+    // the full solve cannot assemble, the submesh mode's start untangles in vertex variables.
+    if (!barrier_forced_simplices<D>(p, options).empty()) return SolveMode::kSubmesh;
     const Index n = p.mesh.num_simplices();
     if (n <= (D == 2 ? options.auto_full_triangles : options.auto_full_tetrahedra))
         return SolveMode::kFull;
@@ -122,12 +128,14 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
     const int threads = options.num_threads > 0 ? options.num_threads : default_thread_count();
     tbb::task_arena arena(threads);
 
-    SubmeshStart start = submesh_start<D>(p, options, budget);
+    SubmeshStart start = submesh_start<D>(p, options, budget, observer.logger);
     Eigen::MatrixXd positions = std::move(start.positions);
     std::vector<Index> bad = std::move(start.bad);
     stats.start = start.description;
     stats.start_iterations = start.iterations;
     stats.start_rejected = start.rejected;
+    stats.start_untangle_iterations = start.untangle_iterations;
+    stats.start_untangle = start.untangle_note;
     stats.start_bad = static_cast<Index>(bad.size());
     stats.start_time = stage.lap();
     std::vector<unsigned char> is_handle(input.mesh.num_vertices(), 0);
@@ -255,7 +263,7 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
             if (stats.out_of_time) break;
             pending.swap(retry);
         }
-        bad = bad_simplices_at<D>(p, positions);
+        bad = bad_simplices_at<D>(p, positions, start.untangled);
         record.remaining = static_cast<Index>(bad.size());
         stats.region_time += round_watch.lap();
         record.time = round_total.seconds();

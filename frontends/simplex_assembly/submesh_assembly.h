@@ -6,7 +6,8 @@
 //      accelerated ARAP or ASAP iterate from it, whichever has the fewest bad simplices); then
 //      the result of the previous round;
 //   2. bad simplices: those the barrier rejects (inverted, at or over the bound, or so distorted
-//      that E_C overflows) and degenerate ones;
+//      that e^{s d} is beyond the barrier's exponent cap, unless the start came from the
+//      untangling) and degenerate ones (submesh_start.h's bad_simplices());
 //      none: done;
 //   3. regions: m rings of simplices around the bad ones (over shared vertices); regions that
 //      share a vertex are merged, so each region is solved once and regions never move a vertex
@@ -27,7 +28,8 @@
 namespace sa {
 
 /// kFull or kSubmesh for `options.mode`, resolving kAuto by the mesh's size and its share of bad
-/// simplices in the initial map.
+/// simplices in the initial map; kSubmesh whatever those when the handles force the barrier
+/// beyond lambda_max (forced_distortion.h).
 template <int D>
 SolveMode choose_mode(const PreparedProblem<D>& prepared, const SimplexAssemblyOptions& options);
 

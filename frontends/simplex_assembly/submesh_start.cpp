@@ -4,6 +4,9 @@
 
 #include <cmath>
 
+#include "energies/barrier.h"
+#include "frontends/simplex_assembly/forced_distortion.h"
+#include "frontends/simplex_assembly/untangle_fallback.h"
 #include "geometry/arap_local_step.h"
 #include "geometry/branch_points.h"
 #include "geometry/disassembly.h"
@@ -17,6 +20,10 @@ namespace {
 
 /// Differences kept by the Anderson acceleration (Peng et al. use 5 to 10).
 constexpr int kAndersonHistory = 6;
+/// The local/global iterations have converged when Q falls by less than this (relative) over
+/// kStallWindow iterations.
+constexpr double kStallDecrease = 1e-3;
+constexpr std::size_t kStallWindow = 10;
 
 Eigen::VectorXd flatten(const Eigen::MatrixXd& m) {
     return Eigen::Map<const Eigen::VectorXd>(m.data(), m.size());
@@ -29,8 +36,33 @@ Eigen::MatrixXd unflatten(const Eigen::VectorXd& v, Index rows) {
 }  // namespace
 
 template <int D>
-std::vector<Index> bad_simplices(const PreparedProblem<D>& p, const std::vector<Mat<D>>& A) {
+void untangle_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& options,
+                    const TimeBudget& budget, const Logger& logger, SubmeshStart& start) {
+    const Eigen::MatrixXd from = (start.positions.rowwise() - p.map_center) * p.scale;
+    const UntangleResult u = untangle_prepared<D>(p, options, budget, from, logger);
+    start.untangle_iterations = u.iterations;
+    start.untangle_note = u.note;
+    // Simplices beyond the barrier's exponent cap are not bad here: what the untangling left
+    // there, which minimized its own distortion, is mostly what the handles force (on
+    // tlc/armadillo-598, 81 simplices with a free vertex, next to 83 whose vertices are all
+    // handles), and no region solve on E_C can rank them.
+    const std::vector<Mat<D>> A = linear_parts<D>(p.mesh, p.frames, u.positions);
+    std::vector<Index> bad = bad_simplices<D>(p, A, true);
+    if (bad.size() < start.bad.size()) {
+        start.positions = p.to_original(u.positions);
+        start.bad.swap(bad);
+        start.description = "untangling (regularized barrier) from the " + start.description;
+        start.recovered = true;
+        start.untangled = true;
+    }
+}
+
+template <int D>
+std::vector<Index> bad_simplices(const PreparedProblem<D>& p, const std::vector<Mat<D>>& A,
+                                 bool beyond_cap_allowed) {
     const Index n = static_cast<Index>(A.size());
+    std::vector<unsigned char> is_handle(p.mesh.num_vertices(), 0);
+    for (Index h : p.input->handles) is_handle[h] = 1;
     std::vector<double> det_volume(n);
     std::vector<unsigned char> rejected(n, 0);
     tbb::parallel_for(Index(0), n, [&](Index s) {
@@ -39,6 +71,16 @@ std::vector<Index> bad_simplices(const PreparedProblem<D>& p, const std::vector<
         rejected[s] = !std::isfinite(det);
     });
     for (const auto& energy : p.assembly.energies) energy->mark_infeasible(A, rejected);
+    if (!beyond_cap_allowed) {
+        tbb::parallel_for(Index(0), n, [&](Index s) {
+            if (rejected[s]) return;
+            bool free = false;
+            for (int k = 0; k <= D; ++k) free |= !is_handle[p.mesh.simplices(s, k)];
+            if (!free) return;
+            for (const auto& energy : p.assembly.energies)
+                if (energy->beyond_exponent_cap(A[s])) rejected[s] = 1;
+        });
+    }
     double largest = 0.0;
     for (double v : det_volume) {
         if (std::isfinite(v)) largest = std::max(largest, v);
@@ -52,7 +94,7 @@ std::vector<Index> bad_simplices(const PreparedProblem<D>& p, const std::vector<
 
 template <int D>
 SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& options,
-                           const TimeBudget& budget) {
+                           const TimeBudget& budget, const Logger& logger) {
     const MappingProblem& input = *p.input;
     const Index rows = p.mesh.num_vertices();
     SubmeshStart start;
@@ -112,9 +154,13 @@ SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& 
     // are. The iterations below move every vertex (then the vertex stage covers the whole mesh)
     // and find nothing better there: on tlc/stgc-3d (2 bad tetrahedra of 1,722, regions of 480)
     // 126 iterations never improved on the initial map.
+    // Not when the handles put a simplex beyond the barrier's exponent cap (forced_distortion.h,
+    // barrier.h): no region solve on E_C can rank the simplices around it (the generated
+    // fixed-boundary problems of bench/map_benchmarks.py with --flatten).
     const Index regions =
         static_cast<Index>(grow_rings(p.mesh, p.topology, start.bad, options.rings).size());
-    if (regions <= (D == 2 ? options.auto_full_triangles : options.auto_full_tetrahedra)) {
+    if (regions <= (D == 2 ? options.auto_full_triangles : options.auto_full_tetrahedra) &&
+        barrier_forced_simplices<D>(p, options, kBarrierExponentCap).empty()) {
         start.description += " (its regions are small)";
         return start;
     }
@@ -136,6 +182,7 @@ SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& 
     x = unflatten(anderson.next(flatten(x), flatten(plain)), rows);
     int last_improvement = 0;
     const int patience = std::max(1, options.start_iterations / 4);
+    std::vector<double> history{previous};  // Q after each iteration
     for (int iteration = 1; iteration <= options.start_iterations; ++iteration) {
         start.iterations = iteration;
         const std::string label = std::string(name) + " iteration " + std::to_string(iteration);
@@ -153,17 +200,32 @@ SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& 
             energy = fit_rigid_parts<D>(p.frames, A, similarity, M);
         }
         previous = energy;
+        history.push_back(energy);
+        // Converged: Q fell by less than kStallDecrease over the last kStallWindow iterations,
+        // so further iterations would not change the map (the untangling below takes over). On
+        // tlc/armadillo-598 (fixed boundary) Q's relative decrease per iteration was below 1e-4
+        // from iteration 11 and exactly 0 from iteration 55, and no iterate had fewer bad
+        // simplices than M^0; on deform/rabbit it stayed above 1.3e-3 per iteration until the
+        // map was valid.
+        if (history.size() > kStallWindow &&
+            history[history.size() - 1 - kStallWindow] - energy <= kStallDecrease * energy) {
+            break;
+        }
         plain = p.recovery().recover(M, p.pinned);
         x = unflatten(anderson.next(flatten(x), flatten(plain)), rows);
     }
+    if (!start.bad.empty() && !budget.exhausted())
+        untangle_start<D>(p, options, budget, logger, start);
     return start;
 }
 
-template std::vector<Index> bad_simplices<2>(const PreparedProblem<2>&, const std::vector<Mat<2>>&);
-template std::vector<Index> bad_simplices<3>(const PreparedProblem<3>&, const std::vector<Mat<3>>&);
+template std::vector<Index> bad_simplices<2>(const PreparedProblem<2>&, const std::vector<Mat<2>>&,
+                                             bool);
+template std::vector<Index> bad_simplices<3>(const PreparedProblem<3>&, const std::vector<Mat<3>>&,
+                                             bool);
 template SubmeshStart submesh_start<2>(PreparedProblem<2>&, const SimplexAssemblyOptions&,
-                                       const TimeBudget&);
+                                       const TimeBudget&, const Logger&);
 template SubmeshStart submesh_start<3>(PreparedProblem<3>&, const SimplexAssemblyOptions&,
-                                       const TimeBudget&);
+                                       const TimeBudget&, const Logger&);
 
 }  // namespace sa

@@ -20,31 +20,48 @@
 // later one (lower Q: ARAP's own distortion measure). The iterations stop after
 // options.start_iterations, or when the fewest has not improved over the last quarter of that
 // many, or (options.until_valid) at the first iterate without a bad simplex.
+// The local/global iterations also stop once Q has converged (it fell by less than 1e-3 over
+// the last 10 iterations): they would not change the map any more.
+//   3. when bad simplices are left, Newton on the vertex positions of a regularized barrier that
+//      needs no feasible start (untangle.h, untangle_fallback.h's untangle_prepared()), from the
+//      best iterate so far, until no simplex is inverted (and, unless options.until_valid, none
+//      with a free vertex is beyond the barrier's exponent cap, or the untangling converged);
+//      kept when it has fewer bad simplices. Local/global iterations fit rotations or
+//      similarities and cannot see which simplices are inverted: on a fixed boundary with a
+//      large tangled region (../shared/data/tlc/armadillo-598) they never improve on M^0.
 
 #include <string>
 #include <vector>
 
 #include "frontends/simplex_assembly/prepared_problem.h"
+#include "optim/logger.h"
 
 namespace sa {
 
 struct SubmeshStart {
-    Eigen::MatrixXd positions;  ///< #V x D, original units
-    std::vector<Index> bad;     ///< its bad simplices
-    std::string description;    ///< which iterate: "initial map", "M^0 (Eq. 6)", ...
-    bool recovered = false;     ///< from Eq. 6: every free vertex moved from the initial map
-    int iterations = 0;         ///< local/global iterations run after M^0
-    int rejected = 0;           ///< accelerated points replaced by plain steps
+    Eigen::MatrixXd positions;    ///< #V x D, original units
+    std::vector<Index> bad;       ///< its bad simplices
+    std::string description;      ///< which iterate: "initial map", "M^0 (Eq. 6)", ...
+    bool recovered = false;       ///< from Eq. 6: every free vertex moved from the initial map
+    int iterations = 0;           ///< local/global iterations run after M^0
+    int rejected = 0;             ///< accelerated points replaced by plain steps
+    bool untangled = false;       ///< from the untangling (untangle.h): see bad_simplices()
+    int untangle_iterations = 0;  ///< Newton steps of the untangling start (untangle.h), if run
+    std::string untangle_note;    ///< how it ended (empty when it did not run)
 };
 
 /// Simplices whose linear parts A (normalized map) the barrier rejects (inverted, at or over the
-/// bound, or so distorted that E_C overflows) and degenerate ones (the rule of map_quality()).
+/// bound) and degenerate ones (the rule of map_quality()); unless `beyond_cap_allowed`, also those
+/// with a free vertex whose e^{s d} is beyond the barrier's exponent cap (barrier.h): E_C cannot
+/// rank them (they overflowed it before the cap existed), and region solves bring them back.
+/// Simplices whose vertices are all handles are never bad for that reason: they are data.
 template <int D>
-std::vector<Index> bad_simplices(const PreparedProblem<D>& p, const std::vector<Mat<D>>& A);
+std::vector<Index> bad_simplices(const PreparedProblem<D>& p, const std::vector<Mat<D>>& A,
+                                 bool beyond_cap_allowed = false);
 
 /// Stops its iterations, keeping the best iterate so far, when `budget` runs out.
 template <int D>
 SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& options,
-                           const TimeBudget& budget);
+                           const TimeBudget& budget, const Logger& logger = {});
 
 }  // namespace sa

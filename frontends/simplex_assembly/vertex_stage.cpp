@@ -78,6 +78,27 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
         result.note = "skipped: the recovered mesh has an inverted simplex or one over the bound";
         return result;
     }
+    // A simplex whose e^{s d} is beyond the barrier's exponent cap (barrier.h; e^500) makes every
+    // other simplex's energy vanish below the sum's rounding: Newton cannot lower the distortion
+    // elsewhere, and on tlc/armadillo-598, where the fixed boundary forces such simplices, its
+    // factorizations failed at every tau. The start is kept.
+    Index beyond_cap = 0;
+    for (Index s : moving) {
+        Eigen::Matrix<double, D, D + 1> corners;
+        for (int k = 0; k <= D; ++k) corners.col(k) = start.row(mesh.simplices(s, k)).transpose();
+        const Mat<D> A = linear_part<D>(frames, s, corners);
+        for (const auto& energy : energies) {
+            if (energy->beyond_exponent_cap(A)) {
+                ++beyond_cap;
+                break;
+            }
+        }
+    }
+    if (beyond_cap > 0) {
+        result.note = "skipped: " + std::to_string(beyond_cap) +
+                      " simplices are so distorted that the barrier cannot rank the others";
+        return result;
+    }
     AssemblyHooks hooks;
     hooks.logger = logger;
     AssemblyRun run = engine.run(engine_options(options), hooks);

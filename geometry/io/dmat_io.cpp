@@ -115,17 +115,22 @@ Eigen::MatrixXd read_dmat(const std::string& path) {
         if (reader.next_line()) return read_binary_dmat(path);
         return Eigen::MatrixXd(0, 0);
     }
-    Eigen::MatrixXd matrix(rows, cols);
     const long long total = static_cast<long long>(rows) * cols;
+    // A count the file cannot hold is read without storing: it fails as the file ends.
+    const bool fits = reader.fitting(total, 1) == total;
+    Eigen::MatrixXd matrix(fits ? rows : 0, fits ? cols : 0);
     std::string_view token;
     for (long long i = 0; i < total; ++i) {
         if (!reader.next_token(token))
             reader.fail_file("file ends after " + std::to_string(i) + " of " +
                              std::to_string(total) + " values (" + std::to_string(rows) + " x " +
                              std::to_string(cols) + ")");
-        matrix(static_cast<Eigen::Index>(i % rows), static_cast<Eigen::Index>(i / rows)) =
-            reader.to_double(token, "value");
+        const double value = reader.to_double(token, "value");
+        if (fits)
+            matrix(static_cast<Eigen::Index>(i % rows), static_cast<Eigen::Index>(i / rows)) =
+                value;
     }
+    if (!fits) reader.check_room(total, total, "values");  // never reached: the file ended
     if (reader.next_token(token))
         reader.fail("unexpected data " + io::quote(token) + " after the " + std::to_string(total) +
                     " values of a " + std::to_string(rows) + " x " + std::to_string(cols) +

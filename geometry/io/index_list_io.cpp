@@ -13,13 +13,18 @@ std::vector<Index> read_index_list(const std::string& path, std::vector<int>* in
     io::TextReader reader(path);
     std::vector<long long> values;
     std::vector<int> lines;
-    bool header_with_comment = false;
+    std::size_t first_line_values = 0;
+    bool first_line_comment = false;
+    bool apart = true;  // every line after the first holds several values
     bool first_line = true;
     while (reader.next_line()) {
         const auto& tokens = reader.tokens();
         if (first_line) {
-            header_with_comment = tokens.size() == 1 && !reader.comment().empty();
+            first_line_values = tokens.size();
+            first_line_comment = !reader.comment().empty();
             first_line = false;
+        } else if (tokens.size() < 2) {
+            apart = false;
         }
         for (const std::string_view token : tokens) {
             const long long value = reader.to_integer(token, "index");
@@ -30,13 +35,25 @@ std::vector<Index> read_index_list(const std::string& path, std::vector<int>* in
             lines.push_back(reader.line_number());
         }
     }
+    // A count line: one number alone on the first line that equals the number of indices after
+    // it. One that disagrees is an error when the file says it is a count (a comment on its
+    // line) or when the layout sets it apart (every line after it holds several indices);
+    // otherwise it is an index like the others.
     std::size_t first = 0;
-    if (!values.empty()) {
+    if (!values.empty() && first_line_values == 1) {
         const auto following = static_cast<long long>(values.size() - 1);
-        if (header_with_comment && values[0] != following)
+        if (values[0] == following) {
+            first = 1;
+        } else if (first_line_comment) {
             reader.fail_at(lines[0], "count header says " + std::to_string(values[0]) + " but " +
                                          std::to_string(following) + " indices follow");
-        if (header_with_comment || values[0] == following) first = 1;
+        } else if (apart && following > 0) {
+            reader.fail_at(lines[0], "the first line holds one number, " +
+                                         std::to_string(values[0]) + ", apart from the " +
+                                         std::to_string(following) +
+                                         " indices after it: a count that disagrees, or an "
+                                         "index? Correct the count, or put it with the others");
+        }
     }
     std::vector<Index> indices;
     indices.reserve(values.size() - first);

@@ -147,7 +147,8 @@ class MeditReader {
         const int n = count("Vertices");
         const std::size_t size = static_cast<std::size_t>(dimension_) + 1;
         const char* layout = dimension_ == 3 ? "x y z ref" : "x y ref";
-        coordinates_.reserve(coordinates_.size() + 3 * static_cast<std::size_t>(n));
+        coordinates_.reserve(coordinates_.size() +
+                             3 * static_cast<std::size_t>(reader_.fitting(n, dimension_ + 1)));
         for (int i = 0; i < n; ++i) {
             const auto& tokens = row("Vertices", i, n, size, layout);
             for (int j = 0; j < dimension_; ++j)
@@ -161,7 +162,8 @@ class MeditReader {
         elements.present = true;
         const int n = count(section);
         const char* layout = k == 3 ? "a b c ref" : "a b c d ref";
-        elements.indices.reserve(elements.indices.size() + static_cast<std::size_t>(k) * n);
+        elements.indices.reserve(elements.indices.size() +
+                                 static_cast<std::size_t>(k * reader_.fitting(n, k + 1)));
         for (int e = 0; e < n; ++e) {
             const auto& tokens = row(section, e, n, static_cast<std::size_t>(k) + 1, layout);
             for (int c = 0; c < k; ++c) {

@@ -12,6 +12,10 @@
 
 namespace sa {
 
+void check_input_file(const std::string& path) {
+    io::check_readable(path);
+}
+
 MeshFile read_mesh_file(const std::string& path) {
     const std::string extension = io::lower_extension(path);
     if (extension == ".obj") return read_obj(path);

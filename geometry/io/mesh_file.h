@@ -38,6 +38,10 @@ struct MeshFile {
     std::vector<std::string> warnings;
 };
 
+/// Throws InputError `FILE: cannot open (reason)` unless `path` is a file that can be opened for
+/// reading (`FILE: cannot open (Is a directory)` for a folder). Every reader checks this first.
+void check_input_file(const std::string& path);
+
 /// Reads a mesh by its extension (case-insensitive): .obj (obj_io.h), .off (off_io.h), .ply and
 /// .stl (openmesh_io.h), .vtk and .vtu (vtk_io.h), .mesh (medit_io.h), .node and .ele
 /// (tetgen_io.h); any other file is read as the plain-text problem format (problem_io.h).

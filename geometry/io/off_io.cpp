@@ -36,7 +36,8 @@ MeshFile read_off(const std::string& path) {
 
     MeshFile result;
     auto& mesh = result.mesh;
-    mesh.vertices.resize(num_vertices, 3);
+    const long long vertex_rows = reader.fitting(num_vertices, 3);
+    mesh.vertices.resize(vertex_rows, 3);
     for (int i = 0; i < num_vertices; ++i) {
         if (!reader.next_line())
             reader.fail_file("file ends after " + std::to_string(i) + " of " +
@@ -45,12 +46,14 @@ MeshFile read_off(const std::string& path) {
         if (tokens.size() < 3 || (plain && tokens.size() != 3))
             reader.fail("expected 3 numbers (x y z) for vertex " + std::to_string(i) + ", found " +
                         std::to_string(tokens.size()));
+        reader.check_room(i, vertex_rows, "vertices");
         for (std::size_t j = 0; j < tokens.size(); ++j) {
             const double value = reader.to_double(tokens[j], "coordinate");
             if (j < 3) mesh.vertices(i, static_cast<Eigen::Index>(j)) = value;
         }
     }
-    mesh.simplices.resize(num_faces, 3);
+    const long long face_rows = reader.fitting(num_faces, 4);
+    mesh.simplices.resize(face_rows, 3);
     for (int f = 0; f < num_faces; ++f) {
         if (!reader.next_line())
             reader.fail_file("file ends after " + std::to_string(f) + " of " +
@@ -63,6 +66,7 @@ MeshFile read_off(const std::string& path) {
         if (tokens.size() < 4)
             reader.fail("expected 4 numbers (3 a b c) for face " + std::to_string(f) + ", found " +
                         std::to_string(tokens.size()));
+        reader.check_room(f, face_rows, "faces");
         for (int c = 0; c < 3; ++c) {
             const long long v = reader.to_integer(tokens[c + 1], "vertex index");
             if (v < 0 || v >= num_vertices)

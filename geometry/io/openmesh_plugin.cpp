@@ -122,10 +122,78 @@ long long declared_faces(const std::string& path, bool stl, bool binary) {
     return faces;
 }
 
+// What a file must start with before OpenMesh reads it (its messages for a file of another kind
+// are vague, and an ASCII STL reader takes any text for an empty mesh): PLY's magic line `ply`;
+// an STL either ASCII (`solid`) or binary (84 + 50 N bytes).
+void check_start(const std::string& path, bool stl, bool binary_stl) {
+    if (binary_stl) return;
+    std::ifstream in(path, std::ios::binary);
+    std::string first;
+    std::getline(in, first);
+    if (!first.empty() && first.back() == '\r') first.pop_back();
+    std::size_t begin = 0;
+    while (begin < first.size() && (first[begin] == ' ' || first[begin] == '\t')) ++begin;
+    bool text = true;
+    for (const char c : first) {
+        const auto u = static_cast<unsigned char>(c);
+        text = text && !((u < 0x20 && c != '\t') || u == 0x7f);
+    }
+    const std::string shown = text ? io::quote(first) : std::string("binary data");
+    if (!stl && first != "ply")
+        throw InputError(path + ":1: not a PLY file: expected 'ply', found " + shown);
+    if (stl && first.compare(begin, 5, "solid") != 0) {
+        std::error_code error;
+        const auto size = std::filesystem::file_size(path, error);
+        throw InputError(path + ": not an STL file: neither ASCII ('solid' on line 1, found " +
+                         shown + ") nor binary (84 + 50 x the triangle count bytes; the file has " +
+                         std::to_string(error ? 0 : size) + ")");
+    }
+}
+
+// A PLY header's lines, checked before OpenMesh parses it (its reader writes through a missing
+// element when a `property` line comes before any `element` line: a crash found by fuzzing):
+// each line a known keyword, every property after an element, an element's count a number, and an
+// `end_header` line.
+void check_ply_header(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string line;
+    std::getline(in, line);  // `ply`, checked by check_start
+    bool element = false;
+    for (int number = 2; std::getline(in, line); ++number) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        std::istringstream words(line);
+        std::string keyword, name;
+        words >> keyword;
+        const auto fail = [&](const std::string& what) {
+            throw InputError(path + ":" + std::to_string(number) + ": " + what);
+        };
+        if (keyword == "end_header") return;
+        if (keyword == "element") {
+            long long count = -1;
+            if (!(words >> name >> count) || count < 0)
+                fail("expected 'element NAME COUNT' in the PLY header");
+            element = true;
+        } else if (keyword == "property") {
+            if (!element) fail("a PLY property before any element");
+        } else if (keyword != "format" && keyword != "comment" && keyword != "obj_info" &&
+                   !keyword.empty()) {
+            std::string shown;
+            for (const char c : keyword.substr(0, 40)) {
+                const auto u = static_cast<unsigned char>(c);
+                shown += u < 0x20 || u >= 0x7f ? '?' : c;
+            }
+            fail("not a PLY header line: '" + shown + "'");
+        }
+    }
+    throw InputError(path + ": the PLY header has no 'end_header' line");
+}
+
 MeshFile read_with_openmesh(const std::string& path, const char* format) {
     io::check_readable(path);
     const bool stl = std::string(format) == "STL";
     const bool binary = stl && is_binary_stl(path);
+    check_start(path, stl, binary);
+    if (!stl) check_ply_header(path);
     Mesh mesh;
     // With status attributes, OpenMesh marks the faces it had to detach to keep the mesh
     // manifold (it re-adds them on duplicated vertices instead of failing).

@@ -25,7 +25,8 @@ void read_header(io::TextReader& reader, const char* what, const char* layout, i
 }
 
 Eigen::MatrixXd read_positions(io::TextReader& reader, const char* what, int count, int dim) {
-    Eigen::MatrixXd positions(count, dim);
+    const long long allocated = reader.fitting(count, dim);
+    Eigen::MatrixXd positions(allocated, dim);
     for (int i = 0; i < count; ++i) {
         if (!reader.next_line())
             reader.fail_file("file ends after " + std::to_string(i) + " of " +
@@ -34,6 +35,7 @@ Eigen::MatrixXd read_positions(io::TextReader& reader, const char* what, int cou
         if (static_cast<int>(tokens.size()) != dim)
             reader.fail("expected " + std::to_string(dim) + " coordinates for vertex " +
                         std::to_string(i) + ", found " + std::to_string(tokens.size()));
+        reader.check_room(i, allocated, what);
         for (int j = 0; j < dim; ++j) positions(i, j) = reader.to_double(tokens[j], "coordinate");
     }
     return positions;
@@ -59,12 +61,27 @@ MeshFile read_problem(const std::string& path) {
                     std::to_string(num_vertices) + " rest vertices");
     if (dim2 != 2 && dim2 != 3)
         reader.fail("initial dimension " + std::to_string(dim2) + "; expected 2 or 3");
+    const int initial_header = reader.line_number();
     result.initial = read_positions(reader, "initial positions", num_vertices, dim2);
+    if (dim == 2 && dim2 == 3) {
+        // A planar rest shape maps to the plane: a z that is not 0 would be dropped.
+        for (int i = 0; i < num_vertices; ++i) {
+            if ((*result.initial)(i, 2) != 0.0)
+                reader.fail_at(initial_header + 1 + i,
+                               "initial position of vertex " + std::to_string(i) +
+                                   " has z = " + io::format_number((*result.initial)(i, 2)) +
+                                   ", but the rest shape is 2D (header on line " +
+                                   std::to_string(initial_header) +
+                                   "): a planar mesh maps to the plane");
+        }
+        result.initial = Eigen::MatrixXd(result.initial->leftCols(2));
+    }
 
     int num_simplices = 0, k = 0;
     read_header(reader, "simplices", "#S k", num_simplices, k);
     if (k != 3 && k != 4) reader.fail(std::to_string(k) + " vertices per simplex; expected 3 or 4");
-    mesh.simplices.resize(num_simplices, k);
+    const long long allocated = reader.fitting(num_simplices, k);
+    mesh.simplices.resize(allocated, k);
     const std::string range = " out of range [0, " + std::to_string(num_vertices - 1) + "]";
     for (int s = 0; s < num_simplices; ++s) {
         if (!reader.next_line())
@@ -74,6 +91,7 @@ MeshFile read_problem(const std::string& path) {
         if (static_cast<int>(tokens.size()) != k)
             reader.fail("expected " + std::to_string(k) + " vertex indices for simplex " +
                         std::to_string(s) + ", found " + std::to_string(tokens.size()));
+        reader.check_room(s, allocated, "simplices");
         for (int c = 0; c < k; ++c) {
             const long long v = reader.to_integer(tokens[c], "vertex index");
             if (v < 0 || v >= num_vertices) reader.fail("vertex " + std::to_string(v) + range);
@@ -87,7 +105,7 @@ MeshFile read_problem(const std::string& path) {
     const int num_handles = reader.to_count(token, "handle count");
     const int count_line = reader.line_number();
     std::unordered_map<int, int> first_line;
-    result.handles.reserve(num_handles);
+    result.handles.reserve(reader.fitting(num_handles, 1));
     for (int h = 0; h < num_handles; ++h) {
         if (!reader.next_token(token))
             reader.fail_file("file ends after " + std::to_string(h) + " of " +
@@ -134,8 +152,7 @@ Eigen::MatrixXd read_result_positions(const std::string& path) {
         if (dims.size() != 2)
             reader.fail("record 'resV' has " + std::to_string(dims.size()) +
                         " dimensions; expected 'resV n d'");
-        Eigen::MatrixXd positions(dims[0], dims[1]);
-        if (values == 0) return positions;
+        if (values == 0) return Eigen::MatrixXd(dims[0], dims[1]);
         if (!reader.next_line())
             reader.fail_file("file ends before the values of record 'resV' (line " +
                              std::to_string(header_line) + ")");
@@ -144,6 +161,7 @@ Eigen::MatrixXd read_result_positions(const std::string& path) {
             reader.fail("expected " + std::to_string(values) + " values for 'resV " +
                         std::to_string(dims[0]) + " " + std::to_string(dims[1]) + "', found " +
                         std::to_string(tokens.size()));
+        Eigen::MatrixXd positions(dims[0], dims[1]);  // its values are on the line just read
         for (int i = 0; i < dims[0]; ++i)
             for (int j = 0; j < dims[1]; ++j)
                 positions(i, j) = reader.to_double(tokens[i * dims[1] + j], "value");

@@ -41,12 +41,14 @@ int read_node(const std::string& path, Eigen::MatrixXd& vertices) {
     const int markers = reader.to_count(header[3], "marker count");
     if (dim != 3) reader.fail("dimension " + std::to_string(dim) + "; only 3 is supported");
     if (markers > 1) reader.fail("marker count " + std::to_string(markers) + "; expected 0 or 1");
-    const std::size_t expected = 4 + static_cast<std::size_t>(attributes + markers);
+    const std::size_t expected =
+        4 + static_cast<std::size_t>(attributes) + static_cast<std::size_t>(markers);
     std::string layout = "index x y z";
     if (attributes > 0) layout += ", " + plural(attributes, "attribute");
     if (markers > 0) layout += ", marker";
 
-    vertices.resize(n, 3);
+    const long long rows = reader.fitting(n, static_cast<long long>(expected));
+    vertices.resize(rows, 3);
     int base = 0;
     for (int i = 0; i < n; ++i) {
         if (!reader.next_line())
@@ -57,6 +59,7 @@ int read_node(const std::string& path, Eigen::MatrixXd& vertices) {
             reader.fail("expected " + std::to_string(expected) + " numbers (" + layout +
                         "), found " + std::to_string(tokens.size()));
         check_row_index(reader, tokens[0], i, base);
+        reader.check_room(i, rows, "vertex rows");
         for (int j = 0; j < 3; ++j) vertices(i, j) = reader.to_double(tokens[j + 1], "coordinate");
         for (std::size_t j = 4; j < tokens.size(); ++j) reader.to_double(tokens[j], "attribute");
     }
@@ -82,7 +85,8 @@ void read_ele(const std::string& path, int node_base, int num_vertices, Eigen::M
     std::string layout = "index a b c d";
     if (attributes > 0) layout += ", " + plural(attributes, "attribute");
 
-    tets.resize(m, 4);
+    const long long rows = reader.fitting(m, static_cast<long long>(expected));
+    tets.resize(rows, 4);
     int base = 0;
     const long long low = node_base, high = static_cast<long long>(num_vertices) - 1 + node_base;
     for (int e = 0; e < m; ++e) {
@@ -94,6 +98,7 @@ void read_ele(const std::string& path, int node_base, int num_vertices, Eigen::M
             reader.fail("expected " + std::to_string(expected) + " numbers (" + layout +
                         "), found " + std::to_string(tokens.size()));
         check_row_index(reader, tokens[0], e, base);
+        reader.check_room(e, rows, "tetrahedra");
         for (int c = 0; c < 4; ++c) {
             const long long v = reader.to_integer(tokens[c + 1], "vertex index");
             if (v < low || v > high)

@@ -1,9 +1,11 @@
 #include "geometry/io/text_reader.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -43,6 +45,12 @@ std::string quote(std::string_view token) {
     return quoted;
 }
 
+std::string format_number(double value) {
+    char text[32];
+    const auto [end, error] = std::to_chars(text, text + sizeof text, value);
+    return error == std::errc() ? std::string(text, end) : std::string("?");
+}
+
 std::string lower_extension(const std::string& path) {
     std::string extension = std::filesystem::path(path).extension().string();
     for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -69,6 +77,7 @@ TextReader::TextReader(std::string path, bool hash_comments)
     buffer << in.rdbuf();
     if (in.bad()) throw InputError(path_ + ": cannot read (" + std::strerror(errno) + ")");
     text_ = std::move(buffer).str();
+    if (text_.compare(0, 3, "\xEF\xBB\xBF") == 0) position_ = 3;  // a UTF-8 byte-order mark
 }
 
 bool TextReader::next_line() {
@@ -86,6 +95,15 @@ bool TextReader::advance() {
         std::string_view raw(text_.data() + position_, stop - position_);
         position_ = end == std::string::npos ? text_.size() : end + 1;
         ++line_number_;
+        for (std::size_t i = 0; i < raw.size(); ++i) {
+            const auto c = static_cast<unsigned char>(raw[i]);
+            if ((c < 0x20 && !is_space(raw[i])) || c == 0x7f) {
+                char byte[8];
+                std::snprintf(byte, sizeof byte, "0x%02x", c);
+                fail("not a text file (byte " + std::string(byte) + " in column " +
+                     std::to_string(i + 1) + "): a binary or compressed file?");
+            }
+        }
         comment_ = {};
         if (hash_comments_) {
             const std::size_t hash = raw.find('#');
@@ -153,6 +171,16 @@ long long TextReader::to_integer(std::string_view token, const char* what) const
     if (error != std::errc() || end != digits.data() + digits.size() || digits.empty())
         fail(std::string("expected an integer ") + what + ", found " + quote(token));
     return value;
+}
+
+long long TextReader::fitting(long long count, long long numbers_each) const {
+    const auto remaining = static_cast<long long>(text_.size() - position_);
+    if (numbers_each <= 0) return count;
+    return std::max(0LL, std::min(count, (remaining + 1) / (2 * numbers_each)));
+}
+
+void TextReader::check_room(long long index, long long allocated, const char* what) const {
+    if (index >= allocated) fail(std::string("more ") + what + " than the file can hold");
 }
 
 int TextReader::to_count(std::string_view token, const char* what) const {

@@ -3,7 +3,11 @@
 // strictly, and throws InputError messages of the form `FILE:LINE: what is wrong`.
 //
 // Lines are returned without their line ending (LF or CRLF), without a `#` comment (when
-// comments are enabled) and without leading and trailing whitespace; blank lines are skipped.
+// comments are enabled) and without leading and trailing whitespace; blank lines are skipped. A
+// UTF-8 byte-order mark at the start of the file is skipped. A line with a NUL byte or another
+// control character than tab, CR, form feed or vertical tab is an error, `FILE:LINE: not a text
+// file (...)`: a compressed or binary file read by mistake is named as such instead of being
+// parsed (or skipped) as text.
 
 #include <cstddef>
 #include <string>
@@ -50,6 +54,17 @@ class TextReader {
     /// Parses a count: a non-negative integer that fits in an int.
     int to_count(std::string_view token, const char* what = "count") const;
 
+    /// How many items of `numbers_each` numbers to allocate for `count` read from the file:
+    /// `count`, or fewer when the rest of the file cannot hold that many (each number takes a
+    /// character and a separator). Reading the items of such a file fails (the file ends, a row is
+    /// short) before more are stored, with the message it would have had anyway, and a corrupt
+    /// count never allocates more memory than the file's size.
+    long long fitting(long long count, long long numbers_each) const;
+
+    /// Throws `FILE:LINE: more WHAT than the file can hold` when `index` >= `allocated`: a guard
+    /// where a reader stores item `index` in `allocated` rows from fitting() (never reached).
+    void check_room(long long index, long long allocated, const char* what) const;
+
   private:
     bool advance();  // moves to the next non-blank line with token_index_ = 0
 
@@ -66,6 +81,9 @@ class TextReader {
 
 /// `'token'` quoted and shortened to at most 40 characters, for messages.
 std::string quote(std::string_view token);
+
+/// The shortest text that reads back as `value` ("0.3", "1e+308"), for messages.
+std::string format_number(double value);
 
 /// The file's extension in lower case, with its dot (".obj"), or "" when it has none.
 std::string lower_extension(const std::string& path);

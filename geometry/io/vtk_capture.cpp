@@ -44,7 +44,7 @@ class CapturingOutputWindow : public vtkOutputWindow {
             const std::size_t prefix = line.find("): ");
             if (line.rfind("vtk", 0) == 0 && prefix != std::string::npos)
                 line = line.substr(prefix + 3);
-            return line;
+            return printable(line);
         }
         return "unknown VTK error";
     }
@@ -53,6 +53,17 @@ class CapturingOutputWindow : public vtkOutputWindow {
     static std::string one_line(std::string text) {
         std::replace(text.begin(), text.end(), '\n', ' ');
         while (!text.empty() && text.back() == ' ') text.pop_back();
+        return printable(text);
+    }
+
+    // VTK quotes what it read, raw bytes of a binary file included: those become '?', and the
+    // text is cut at 160 characters.
+    static std::string printable(std::string text) {
+        for (char& c : text) {
+            const auto u = static_cast<unsigned char>(c);
+            if (u < 0x20 || u >= 0x7f) c = '?';
+        }
+        if (text.size() > 160) text = text.substr(0, 157) + "...";
         return text;
     }
 };

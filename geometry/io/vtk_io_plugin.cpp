@@ -16,12 +16,16 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <limits>
 #include <set>
 #include <sstream>
 #include <string>
+#include <string_view>
 
 #include "geometry/io/atomic_file.h"
 #include "geometry/io/text_reader.h"
@@ -237,7 +241,59 @@ void run_reader(Reader& reader, const std::string& path, const std::string& form
         throw InputError(path + ": cannot read as " + format + " (VTK: " + error + ")");
 }
 
+/// The first `size` bytes of the file (fewer when it is shorter).
+std::string file_start(const std::string& path, std::size_t size) {
+    io::check_readable(path);
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes(size, '\0');
+    in.read(bytes.data(), static_cast<std::streamsize>(size));
+    bytes.resize(static_cast<std::size_t>(in.gcount()));
+    return bytes;
+}
+
+/// Throws `PATH: not a text file` when `bytes` hold a NUL or another control character than
+/// whitespace, before VTK reads what is not VTK at all (its messages echo the raw bytes).
+void check_text(const std::string& path, std::string_view bytes, const char* format) {
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+        const auto c = static_cast<unsigned char>(bytes[i]);
+        if ((c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' && c != '\v') ||
+            c == 0x7f) {
+            char byte[8];
+            std::snprintf(byte, sizeof byte, "0x%02x", c);
+            throw InputError(path + ": not a text file (byte " + byte + " at offset " +
+                             std::to_string(i) + "), so not " + format +
+                             ": a binary or compressed file?");
+        }
+    }
+}
+
+/// Legacy VTK files start with the line `# vtk DataFile Version x.y`.
+void check_legacy_header(const std::string& path) {
+    const std::string start = file_start(path, 256);
+    if (start.compare(0, 3, "\xEF\xBB\xBF") == 0)
+        throw InputError(path +
+                         ":1: starts with a UTF-8 byte-order mark, which VTK's legacy "
+                         "reader does not accept");
+    const std::string_view first(start.data(), std::min(start.find('\n'), start.size()));
+    check_text(path, first, "a legacy VTK file");
+    if (first.rfind("# vtk DataFile Version", 0) != 0)
+        throw InputError(path + ":1: expected '# vtk DataFile Version x.y', found " +
+                         io::quote(first));
+}
+
+/// XML files start with '<' (after whitespace).
+void check_xml_start(const std::string& path) {
+    const std::string start = file_start(path, 256);
+    std::size_t i = start.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+    while (i < start.size() && std::isspace(static_cast<unsigned char>(start[i]))) ++i;
+    const std::size_t end = std::min(start.find('>'), start.size());
+    check_text(path, std::string_view(start).substr(0, end), "a VTU (XML) file");
+    if (i >= start.size() || start[i] != '<')
+        throw InputError(path + ": not a VTU (XML) file: it does not start with '<'");
+}
+
 MeshFile read_vtk_file(const std::string& path) {
+    check_legacy_header(path);
     auto reader = vtkSmartPointer<vtkDataSetReader>::New();
     run_reader(*reader, path, "legacy VTK");
     vtkDataSet* data = reader->GetOutput();
@@ -250,6 +306,7 @@ MeshFile read_vtk_file(const std::string& path) {
 }
 
 MeshFile read_vtu_file(const std::string& path) {
+    check_xml_start(path);
     auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
     run_reader(*reader, path, "VTU");
     vtkUnstructuredGrid* grid = reader->GetOutput();

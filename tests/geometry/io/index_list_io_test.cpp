@@ -33,6 +33,22 @@ TEST(IndexListIo, CountHeaderIsCheckedAndDropped) {
         {"wrong.txt:1:", "count header says 4 but 2 indices follow"}));
 }
 
+TEST(IndexListIo, ACountLineIsOneOnlyWhenItMatches) {
+    TempFolder folder;
+    // Several numbers on the first line: all indices, whatever the first one is.
+    EXPECT_EQ(read_index_list(folder.write("row.txt", "3 10 20 30\n")),
+              (std::vector<Index>{3, 10, 20, 30}));
+    // One per line, the first disagreeing with the count after it: an index like the others.
+    EXPECT_EQ(read_index_list(folder.write("column.txt", "3\n10\n20\n30\n40\n")),
+              (std::vector<Index>{3, 10, 20, 30, 40}));
+    // Set apart by the layout but disagreeing: ambiguous.
+    EXPECT_TRUE(
+        throws_input_error([&] { read_index_list(folder.write("apart.txt", "3\n10 20\n30 40\n")); },
+                           {"apart.txt:1:", "one number, 3, apart from the 4 indices after it"}));
+    EXPECT_EQ(read_index_list(folder.write("apart-ok.txt", "4\n10 20\n30 40\n")),
+              (std::vector<Index>{10, 20, 30, 40}));
+}
+
 TEST(IndexListIo, RoundTripWhateverTheFirstIndex) {
     TempFolder folder;
     const std::string path = folder.path("h.txt");

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "geometry/io/problem_io.h"
 #include "io_test_util.h"
 
@@ -96,6 +98,57 @@ TEST(MeshFile, EveryWriterLeavesNothingOnFailure) {
                 else
                     write_mesh_file(p, mesh.positions, bad);
             });
+    }
+}
+
+TEST(MeshFile, AByteOrderMarkIsSkippedInEveryTextFormat) {
+    TempFolder folder;
+    const Tet mesh;
+    const std::string bom = "\xEF\xBB\xBF";
+    for (const char* name : {"a.obj", "a.off", "a.mesh", "a.problem"}) {
+        SCOPED_TRACE(name);
+        const std::string path = folder.path(name);
+        if (std::string(name) == "a.problem") {
+            std::ofstream(path) << "3 2\n0 0\n1 0\n0 1\n3 2\n0 0\n1 0\n0 1\n1 3\n0 1 2\n";
+        } else {
+            write_mesh_file(path, mesh.positions, mesh.triangles);
+        }
+        const MeshFile plain = read_mesh_file(path);
+        const std::string text = test::read_all(path);
+        folder.write(name, bom + text);
+        const MeshFile marked = read_mesh_file(path);
+        EXPECT_EQ(marked.mesh.vertices, plain.mesh.vertices);
+        EXPECT_EQ(marked.mesh.simplices, plain.mesh.simplices);
+    }
+}
+
+TEST(MeshFile, ABinaryFileIsNotATextFile) {
+    TempFolder folder;
+    const std::string gzip("\x1f\x8b\x08\x00\x00\x00\x00\x00\x00\x03v 0 0 0\n", 18);
+    for (const char* name : {"a.obj", "a.off", "a.mesh", "a.node", "problem", "a.vtk", "a.vtu"}) {
+        SCOPED_TRACE(name);
+        const std::string path = folder.write(name, gzip);
+        EXPECT_TRUE(throws_input_error([&] { read_mesh_file(path); },
+                                       {path, "not a text file (byte 0x1f"}));
+    }
+    // NUL bytes after a line of text: found on their line.
+    const std::string path = folder.write("late.obj", std::string("v 0 0 0\nv 1\0 0\n", 14));
+    EXPECT_TRUE(throws_input_error([&] { read_mesh_file(path); },
+                                   {"late.obj:2: not a text file (byte 0x00 in column 4)"}));
+}
+
+TEST(MeshFile, ACountLargerThanTheFileFailsWithoutAllocatingIt) {
+    TempFolder folder;
+    const std::vector<std::pair<const char*, std::string>> files = {
+        {"huge.off", "OFF\n2000000000 2000000000 0\n0 0 0\n"},
+        {"huge", "2000000000 3\n0 0 0\n"},
+        {"huge.mesh", "MeshVersionFormatted 2\nDimension 3\nVertices\n2000000000\n0 0 0 0\n"},
+        {"huge.node", "2000000000 3 0 0\n0 0 0 0\n"},
+    };
+    for (const auto& [name, content] : files) {
+        SCOPED_TRACE(name);
+        const std::string path = folder.write(name, content);
+        EXPECT_TRUE(throws_input_error([&] { read_mesh_file(path); }, {name, "2000000000"}));
     }
 }
 

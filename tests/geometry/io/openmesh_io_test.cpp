@@ -103,7 +103,19 @@ TEST(OpenMeshIo, RefusedFacesAndBadFilesAreErrorsAndNothingIsPrinted) {
     EXPECT_TRUE(throws_input_error(read("quad.ply", ply(kSquare, 4, "4 0 1 2 3\n", 1)),
                                    {"quad.ply:", "face 0 with 4 vertices"}));
     EXPECT_TRUE(throws_input_error(read("garbage.ply", "this is not a ply file\n"),
-                                   {"garbage.ply:", "cannot read as PLY"}));
+                                   {"garbage.ply:1: not a PLY file: expected 'ply', found "
+                                    "'this is not a ply file'"}));
+    EXPECT_TRUE(throws_input_error(read("header.ply", "ply\nformat nonsense\n"),
+                                   {"header.ply: the PLY header has no 'end_header' line"}));
+    EXPECT_TRUE(throws_input_error(read("header.ply", "ply\nformat nonsense\nend_header\n"),
+                                   {"header.ply:", "cannot read as PLY"}));
+    // A property before any element made OpenMesh's reader write through a missing element.
+    EXPECT_TRUE(throws_input_error(
+        read("order.ply", "ply\nformat ascii 1.0\nproperty float x\nend_header\n"),
+        {"order.ply:3: a PLY property before any element"}));
+    EXPECT_TRUE(throws_input_error(
+        [&] { read_stl(folder.write("text.stl", "hello\n")); },
+        {"text.stl: not an STL file: neither ASCII ('solid' on line 1, found 'hello')"}));
     EXPECT_TRUE(throws_input_error(read("short.ply", ply("0 0 0\n", 4, "", 0)),
                                    {"short.ply:", "cannot read as PLY"}));
     EXPECT_TRUE(throws_input_error(

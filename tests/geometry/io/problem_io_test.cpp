@@ -141,5 +141,21 @@ TEST(ResultRecords, WriterWritesAtomically) {
         [&](const std::string& p) { write_result_records(p, bad); });
 }
 
+TEST(ProblemIo, APlanarRestShapeTakesAPlanarInitialMap) {
+    TempFolder folder;
+    const std::string rest = "3 2\n0 0\n1 0\n0 1\n";
+    const std::string tris = "1 3\n0 1 2\n";
+    // z = 0 everywhere: nothing is lost, the map is planar.
+    const MeshFile flat =
+        read_problem(folder.write("flat", rest + "3 3\n0 0 0\n2 0 0\n0 2 0\n" + tris));
+    ASSERT_TRUE(flat.initial.has_value());
+    EXPECT_EQ(flat.initial->cols(), 2);
+    EXPECT_EQ((*flat.initial)(1, 0), 2.0);
+    // A z that is not 0 would be dropped: an error naming the vertex, its line and the header's.
+    EXPECT_TRUE(throws_input_error(
+        [&] { read_problem(folder.write("lifted", rest + "3 3\n0 0 0\n1 0 0.5\n0 1 0\n" + tris)); },
+        {"lifted:7:", "vertex 1 has z = 0.5", "the rest shape is 2D (header on line 5)"}));
+}
+
 }  // namespace
 }  // namespace sa

@@ -139,7 +139,14 @@ TEST(VtkIo, MalformedFilesAreErrorsAndNothingIsPrinted) {
     EXPECT_TRUE(throws_input_error(read("quad.vtk", legacy_grid("4 0 1 2 3\n", 1, 5, "9\n")),
                                    {"quad.vtk: cell 0 has type 9 (vtkQuad)", "only triangles"}));
     EXPECT_TRUE(throws_input_error(read("garbage.vtk", "not a vtk file\n"),
-                                   {"garbage.vtk: cannot read as legacy VTK (VTK: "}));
+                                   {"garbage.vtk:1: expected '# vtk DataFile Version x.y', found "
+                                    "'not a vtk file'"}));
+    EXPECT_TRUE(throws_input_error(read("header.vtk", "# vtk DataFile Version 3.0\nnothing\n"),
+                                   {"header.vtk: cannot read as legacy VTK (VTK: "}));
+    EXPECT_TRUE(throws_input_error(read("gzip.vtk", std::string("\x1f\x8b\x08\0\0\0", 6)),
+                                   {"gzip.vtk: not a text file (byte 0x1f at offset 0)"}));
+    EXPECT_TRUE(throws_input_error(read("gzip.vtu", std::string("\x1f\x8b\x08\0\0\0", 6)),
+                                   {"gzip.vtu: not a text file (byte 0x1f at offset 0)"}));
     EXPECT_TRUE(throws_input_error(
         read("image.vtk",
              "# vtk DataFile Version 3.0\nimage\nASCII\nDATASET STRUCTURED_POINTS\n"

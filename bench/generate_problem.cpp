@@ -1,0 +1,88 @@
+// Writes a generated mapping problem (geometry/generated_problems.h) in the plain-text problem
+// format of ../shared/data/tlc/*/input (rest, initial map, simplices, handles), for `sa map` and
+// bench/map_benchmarks.py:
+//
+//   bench_generate_problem --kind fixed-boundary --mesh ../shared/data/tet/hand.mesh \
+//       --deformation twist --amount 1.5 --noise 1.0 --seed 1 --out hand-twist.txt
+//   bench_generate_problem --kind slabs --grid 24 24 64 --deformation twist --amount 3.14 \
+//       --slab 0.05 --out bar-twist.txt
+//
+// Prints one line: vertices, simplices, handles, inverted simplices of the initial map.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+
+#include "geometry/generated_problems.h"
+#include "geometry/io/mesh_file.h"
+#include "geometry/map_quality.h"
+#include "geometry/mesh_generators.h"
+#include "geometry/rest_frames.h"
+#include "optim/errors.h"
+
+int main(int argc, char** argv) {
+    CLI::App app("Generated mapping problems (geometry/generated_problems.h)");
+    std::string kind = "fixed-boundary", mesh_path, deformation = "twist", out;
+    std::vector<int> grid;
+    double amount = 1.5, noise = 1.0, flatten = 1.0, slab = 0.05;
+    std::uint64_t seed = 1;
+    app.add_option("--kind", kind, "fixed-boundary or slabs")
+        ->check(CLI::IsMember({"fixed-boundary", "slabs"}));
+    app.add_option("--mesh", mesh_path, "a tetrahedral mesh (any format sa reads)");
+    app.add_option("--grid", grid, "nx ny nz: a box of Kuhn-cut cubes instead")->expected(3);
+    app.add_option("--deformation", deformation, "twist or bend")
+        ->check(CLI::IsMember({"twist", "bend"}));
+    app.add_option("--amount", amount, "radians");
+    app.add_option("--noise", noise, "fixed-boundary: interior noise, in mean edge lengths");
+    app.add_option("--seed", seed);
+    app.add_option("--flatten", flatten, "fixed-boundary: scale of the shortest side (<= 1)");
+    app.add_option("--slab", slab, "slabs: handle slab width, a fraction of the length");
+    app.add_option("--out", out, "output problem file")->required();
+    CLI11_PARSE(app, argc, argv);
+    try {
+        sa::SimplicialMesh rest;
+        if (grid.size() == 3) {
+            rest = sa::grid_tetrahedra(grid[0], grid[1], grid[2]);
+        } else if (!mesh_path.empty()) {
+            rest = sa::read_mesh_file(mesh_path).mesh;
+        } else {
+            throw sa::InvalidArgumentError("give --mesh or --grid");
+        }
+        const auto d = deformation == "twist" ? sa::GeneratedDeformation::kTwist
+                                              : sa::GeneratedDeformation::kBend;
+        const sa::GeneratedProblem p =
+            kind == "slabs" ? sa::handle_slab_problem(rest, d, amount, slab)
+                            : sa::fixed_boundary_problem(rest, d, amount, noise, seed, flatten);
+        std::ofstream f(out);
+        f << std::setprecision(17);
+        auto block = [&](const Eigen::MatrixXd& m) {
+            f << m.rows() << ' ' << m.cols() << '\n';
+            for (sa::Index r = 0; r < m.rows(); ++r) {
+                for (sa::Index c = 0; c < m.cols(); ++c) f << (c ? " " : "") << m(r, c);
+                f << '\n';
+            }
+        };
+        block(p.rest.vertices);
+        block(p.initial);
+        f << p.rest.simplices.rows() << ' ' << p.rest.simplices.cols() << '\n';
+        for (sa::Index r = 0; r < p.rest.simplices.rows(); ++r) {
+            for (sa::Index c = 0; c < p.rest.simplices.cols(); ++c)
+                f << (c ? " " : "") << p.rest.simplices(r, c);
+            f << '\n';
+        }
+        f << p.handles.size() << '\n';
+        for (sa::Index h : p.handles) f << h << '\n';
+        if (!f) throw sa::InputError(out + ": cannot write");
+        const sa::RestFrames<3> frames = sa::rest_frames<3>(p.rest);
+        const sa::MapQuality q =
+            sa::map_quality<3>(sa::linear_parts<3>(p.rest, frames, p.initial), frames.volume);
+        std::printf("%ld vertices, %ld simplices, %zu handles, %ld inverted in the initial map\n",
+                    long(p.rest.num_vertices()), long(p.rest.num_simplices()), p.handles.size(),
+                    long(q.inverted));
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "bench_generate_problem: %s\n", e.what());
+        return 2;
+    }
+    return 0;
+}

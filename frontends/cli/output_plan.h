@@ -1,0 +1,93 @@
+#pragma once
+// The outputs of one run of an `sa` command: checked before anything is read, written all or
+// nothing.
+//
+//   OutputPlan plan(force);
+//   plan.input("--rest", rest);  plan.file("--out", out);  plan.folder("--record", frames);
+//   plan.check();                  // before reading or solving
+//   ... read, solve ...
+//   plan.open_folders();           // creates the folders (before the solve that records)
+//   plan.write(out, [&](const std::string& path) { write_mesh_file(path, ...); });
+//   plan.commit();                 // every file renamed into place
+//
+// check() rejects, naming the option: two outputs with one path, an output that names an input
+// (even with --force), an output that is a directory, a folder that does not exist, is not a
+// folder or cannot be written (tried by creating a file in it), and an existing file without
+// --force.
+//
+// Each file is written under a hidden name in its own folder, `.NAME.sa-PID.EXT` (the same
+// extension, so that the writers choose the same format), and commit() renames them all into
+// place. Until then a failure (an exception, or an interruption: interruption.h) removes every
+// hidden file, a folder the run created, and what the run added to a folder that existed: no
+// output is left and existing files keep their content.
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "frontends/cli/interruption.h"
+
+namespace sa::cli {
+
+class OutputPlan {
+  public:
+    /// `overwrite`: --force, existing files may be replaced.
+    explicit OutputPlan(bool overwrite);
+    /// Removes the outputs of an uncommitted run.
+    ~OutputPlan();
+    OutputPlan(const OutputPlan&) = delete;
+    OutputPlan& operator=(const OutputPlan&) = delete;
+
+    /// An input file, which no output may name. Empty paths are ignored.
+    void input(const std::string& option, const std::string& path);
+    /// An output file. Empty paths are ignored.
+    void file(const std::string& option, const std::string& path);
+    /// An output folder (created when missing, with its parents). Without --force, none of the
+    /// files named in `marks` may exist in it (they mark an earlier run). Empty paths are ignored.
+    void folder(const std::string& option, const std::string& path,
+                std::vector<std::string> marks = {});
+
+    /// Throws InvalidArgumentError (two outputs with one path, an output naming an input) or
+    /// InputError (a location that cannot be written, an existing file without --force), naming
+    /// the option and the path.
+    void check() const;
+
+    /// Creates the folders; from here on what the run adds to them is removed on failure.
+    void open_folders();
+
+    /// The hidden name `path` is written under until commit().
+    std::string staged(const std::string& path) const;
+
+    /// Calls `write(staged(path))` under the output lock.
+    template <class Write>
+    void write(const std::string& path, Write&& write) {
+        const auto lock = output_lock();
+        write(staged(path));
+    }
+
+    /// Renames every written file into place (under the output lock). Throws InputError when a
+    /// rename fails, after removing the files renamed so far.
+    void commit();
+
+  private:
+    struct Entry {
+        std::string option, path;
+    };
+    struct Folder {
+        std::string option, path;
+        std::vector<std::string> marks;
+        std::string created;             ///< the topmost folder open_folders() created, if any
+        std::set<std::string> existing;  ///< entries before the run, when it existed
+        bool opened = false;
+    };
+    /// Removes the staged files and what the run added to the folders (output lock held).
+    void roll_back() noexcept;
+    void remove_outputs() const;
+
+    bool overwrite_;
+    bool committed_ = false;
+    std::vector<Entry> inputs_, files_;
+    std::vector<Folder> folders_;
+};
+
+}  // namespace sa::cli

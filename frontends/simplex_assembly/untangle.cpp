@@ -1,0 +1,196 @@
+#include "frontends/simplex_assembly/untangle.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "energies/untangling_energy.h"
+#include "energies/vertex_copy_energies.h"
+#include "optim/newton_solver.h"
+#include "optim/problem.h"
+
+namespace sa {
+
+namespace {
+
+/// eps once every det A is well above zero: f_eps is then the plain distortion.
+constexpr double kFinalEpsilon = 1e-10;
+/// The smallest relative decrease the eps rule assumes (Garanzha et al.'s 0.1).
+constexpr double kMinimumDecrease = 0.1;
+
+struct DeterminantStats {
+    double min = kInfinity;
+    Index nonpositive = 0;
+};
+
+}  // namespace
+
+template <int D>
+UntangleResult untangle(const SimplicialMesh& mesh, const RestFrames<D>& frames,
+                        const Eigen::MatrixXd& start, const std::vector<unsigned char>& fixed,
+                        const UntangleOptions& options, const Logger& logger) {
+    UntangleResult result;
+    result.positions = start;
+    const Index nv = mesh.num_vertices();
+    Eigen::VectorXd x(static_cast<Index>(D) * nv);
+    for (Index v = 0; v < nv; ++v) x.template segment<D>(D * v) = start.row(v).transpose();
+
+    // The simplices with a free vertex; the others cannot change.
+    std::vector<std::array<Index, D*(D + 1)>> elements;
+    std::vector<Index> moving;
+    std::vector<Mat<D>> rest_inverse;
+    std::vector<double> weights;
+    double total_volume = 0.0;
+    for (Index s = 0; s < mesh.num_simplices(); ++s) {
+        bool moves = false;
+        for (int k = 0; k <= D; ++k) moves |= !fixed[mesh.simplices(s, k)];
+        if (!moves) continue;
+        std::array<Index, D*(D + 1)> e;
+        for (int k = 0; k <= D; ++k) {
+            for (int c = 0; c < D; ++c) e[D * k + c] = D * mesh.simplices(s, k) + c;
+        }
+        elements.push_back(e);
+        moving.push_back(s);
+        rest_inverse.push_back(frames.edge_inverse[s]);
+        weights.push_back(frames.volume[s]);
+        total_volume += frames.volume[s];
+    }
+    // Weights relative to the moving volume: the energy is a mean distortion, O(1) when untangled.
+    for (double& w : weights) w /= total_volume;
+    const Index m = static_cast<Index>(elements.size());
+
+    // det A of every moving simplex at x: the quantity eps is measured against.
+    auto determinants = [&](const Eigen::VectorXd& at) {
+        return tbb::parallel_reduce(
+            tbb::blocked_range<Index>(0, m, 1024), DeterminantStats{},
+            [&](const tbb::blocked_range<Index>& r, DeterminantStats acc) {
+                for (Index k = r.begin(); k != r.end(); ++k) {
+                    Mat<D> edges;
+                    const Index s = moving[k];
+                    const Index v0 = mesh.simplices(s, 0);
+                    for (int c = 0; c < D; ++c) {
+                        edges.col(c) = at.template segment<D>(D * mesh.simplices(s, c + 1)) -
+                                       at.template segment<D>(D * v0);
+                    }
+                    const double det = (edges * frames.edge_inverse[s]).determinant();
+                    acc.min = std::min(acc.min, det);
+                    acc.nonpositive += det > 0.0 ? 0 : 1;
+                }
+                return acc;
+            },
+            [](DeterminantStats a, const DeterminantStats& b) {
+                a.min = std::min(a.min, b.min);
+                a.nonpositive += b.nonpositive;
+                return a;
+            });
+    };
+
+    auto parameters = std::make_shared<UntanglingParameters>();
+    Problem problem(x);
+    problem.add_term("untangling",
+                     VertexSimplexEnergy<D, UntanglingEnergy<D>>(
+                         UntanglingEnergy<D>(std::move(weights), parameters), rest_inverse),
+                     std::move(elements));
+    for (Index v = 0; v < nv; ++v) {
+        if (!fixed[v]) continue;
+        for (int c = 0; c < D; ++c) problem.set_fixed(D * v + c);
+    }
+
+    DeterminantStats stats = determinants(x);
+    result.min_det = stats.min;
+    result.inverted = stats.nonpositive;
+    result.untangled = stats.nonpositive == 0;
+    auto positions_of = [&](const Eigen::VectorXd& at) {
+        Eigen::MatrixXd positions(nv, D);
+        for (Index v = 0; v < nv; ++v) positions.row(v) = at.template segment<D>(D * v).transpose();
+        return positions;
+    };
+    auto accepted = [&](const Eigen::VectorXd& at) {
+        return options.until_valid && (!options.accept || options.accept(positions_of(at)));
+    };
+    if (m == 0 || (result.untangled && accepted(x))) {
+        result.note = m == 0 ? "no simplex has a free vertex" : "the start is untangled";
+        return result;
+    }
+    // Garanzha et al. start from eps = 1 on a mesh scaled so that det A is about 1 where the map
+    // keeps the rest size, as here (rest and map share the driver's normalization).
+    parameters->epsilon = 1.0;
+    Eigen::VectorXd best_valid;  // the last untangled iterate
+    if (result.untangled) best_valid = x;
+    bool converged = false;
+
+    NewtonOptions newton;
+    newton.max_iterations = options.max_iterations;
+    newton.max_time_seconds = options.max_time_seconds;
+    // eps changes between steps, so the solver's own tests (at fixed weights) do not apply.
+    newton.gradient_tolerance = newton.decrement_tolerance = newton.function_tolerance = 0.0;
+    newton.projection = options.projection;
+    newton.projection_epsilon = options.projection_epsilon;
+    newton.linear_solver = options.linear_solver;
+    newton.num_threads = options.num_threads;
+    log_line(logger, "untangle   energy    eps        min det    inverted  step      time");
+    newton.callbacks.push_back([&](const IterationContext& c) {
+        if (c.record.iteration == 0) return CallbackResult::kContinue;
+        const Eigen::VectorXd& at = c.problem.variables();
+        stats = determinants(at);
+        const double eps = parameters->epsilon;
+        char line[160];
+        std::snprintf(line, sizeof line, "U%4d  %10.4e  %9.3e  %10.3e  %7ld  %8.2e  %6.2fs",
+                      c.record.iteration, c.record.energy, eps, stats.min, long(stats.nonpositive),
+                      c.record.step_length, c.record.cumulative_time);
+        log_line(logger, line);
+        const double energy = c.record.energy;
+        const double before = energy + c.record.energy_change;  // at the same eps
+        if (stats.nonpositive == 0) {
+            best_valid = at;
+            if (accepted(at)) return CallbackResult::kStopSuccess;
+            if (eps <= kFinalEpsilon &&
+                c.record.energy_change <= options.energy_tolerance * std::abs(energy)) {
+                converged = true;
+                return CallbackResult::kStopSuccess;
+            }
+        }
+        // Lower eps only after a full Newton step: a damped one says that Newton is not yet in
+        // its local regime for this eps (Garanzha et al. lower it after an inner solve to
+        // convergence). Without this rule a faster schedule stalled (BENCHMARKS.md).
+        if (c.record.step_length < 1.0) return CallbackResult::kContinue;
+        const double sigma = std::max(1.0 - energy / before, kMinimumDecrease);
+        const double mu = (1.0 - sigma) * regularized_determinant(stats.min, eps).value;
+        parameters->epsilon =
+            stats.min < mu ? 2.0 * std::sqrt(mu * (mu - stats.min)) : kFinalEpsilon;
+        return CallbackResult::kContinue;
+    });
+    result.newton = solve(problem, newton);
+    result.iterations = result.newton.num_steps();
+    result.epsilon = parameters->epsilon;
+    const Eigen::VectorXd& final_x = best_valid.size() > 0 ? best_valid : problem.variables();
+    stats = determinants(final_x);
+    result.min_det = stats.min;
+    result.inverted = stats.nonpositive;
+    result.untangled = stats.nonpositive == 0;
+    result.positions = positions_of(final_x);
+    result.note = result.untangled ? (converged ? "untangled, converged" : "untangled")
+                                   : "not untangled: " + to_string(result.newton.termination);
+    const PhaseTimes& t = result.newton.times;
+    char line[320];
+    std::snprintf(line, sizeof line,
+                  "untangling: %s after %d steps, %.2f s (evaluate %.2f, project %.2f, assemble "
+                  "%.2f, factorize %.2f, solve %.2f, line search %.2f, checks %.2f)",
+                  result.note.c_str(), result.iterations, t.total, t.evaluate, t.project,
+                  t.assemble, t.factorize, t.solve, t.line_search, t.callbacks);
+    log_line(logger, line);
+    return result;
+}
+
+template UntangleResult untangle<2>(const SimplicialMesh&, const RestFrames<2>&,
+                                    const Eigen::MatrixXd&, const std::vector<unsigned char>&,
+                                    const UntangleOptions&, const Logger&);
+template UntangleResult untangle<3>(const SimplicialMesh&, const RestFrames<3>&,
+                                    const Eigen::MatrixXd&, const std::vector<unsigned char>&,
+                                    const UntangleOptions&, const Logger&);
+
+}  // namespace sa

@@ -1,0 +1,113 @@
+#include "frontends/simplex_assembly/untangle_fallback.h"
+
+#include "frontends/simplex_assembly/forced_distortion.h"
+#include "frontends/simplex_assembly/vertex_stage.h"
+#include "geometry/map_quality.h"
+#include "optim/stopwatch.h"
+
+namespace sa {
+
+namespace {
+
+/// Inverted and degenerate simplices of `positions` (normalized), by map_quality()'s rule.
+template <int D>
+Index invalid_simplices(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions) {
+    const MapQuality q =
+        map_quality<D>(linear_parts<D>(p.mesh, p.frames, positions), p.frames.volume);
+    return q.inverted + q.degenerate;
+}
+
+/// The handles and the anchored simplices' vertices: what the vertex stage keeps fixed.
+template <int D>
+std::vector<unsigned char> fixed_vertices(const PreparedProblem<D>& p) {
+    std::vector<unsigned char> fixed(p.mesh.num_vertices(), 0);
+    for (Index h : p.input->handles) fixed[h] = 1;
+    for (Index s : p.assembly.anchored_simplices) {
+        for (int k = 0; k <= D; ++k) fixed[p.mesh.simplices(s, k)] = 1;
+    }
+    return fixed;
+}
+
+}  // namespace
+
+template <int D>
+UntangleResult untangle_prepared(PreparedProblem<D>& p, const SimplexAssemblyOptions& options,
+                                 const TimeBudget& budget, const Eigen::MatrixXd& start,
+                                 const Logger& logger) {
+    UntangleOptions o;
+    o.until_valid = true;
+    if (!options.until_valid) {
+        o.accept = [&p](const Eigen::MatrixXd& x) {
+            return simplices_beyond_barrier_cap<D>(p, x) == 0;
+        };
+    }
+    o.max_time_seconds = with_time_left(options, budget).max_time_seconds;
+    o.projection = options.projection;
+    o.projection_epsilon = options.projection_epsilon;
+    o.linear_solver = options.linear_solver;
+    o.num_threads = options.num_threads;
+    return untangle<D>(p.mesh, p.frames, start, fixed_vertices<D>(p), o, logger);
+}
+
+template <int D>
+bool untangle_fallback(PreparedProblem<D>& p, const SimplexAssemblyOptions& options,
+                       const TimeBudget& budget, const SimplexAssemblyObserver& observer,
+                       SimplexAssemblyResult& result) {
+    if (budget.exhausted() || !p.assembly.fans.empty()) return false;  // no E_theta here
+    Stopwatch watch;
+    const MappingProblem& input = *p.input;
+    Eigen::MatrixXd initial = p.start;
+    for (std::size_t k = 0; k < input.handles.size(); ++k)
+        initial.row(input.handles[k]) = p.assembly.targets[k].transpose();
+    const Eigen::MatrixXd reached = (result.positions.rowwise() - p.map_center) * p.scale;
+    const Index before = invalid_simplices<D>(p, reached);
+    const bool from_result = before <= invalid_simplices<D>(p, initial);
+    log_line(observer.logger,
+             std::string("no valid map: untangling in vertex variables from the ") +
+                 (from_result ? "result" : "initial map"));
+    const UntangleResult u =
+        untangle_prepared<D>(p, options, budget, from_result ? reached : initial, observer.logger);
+    Eigen::MatrixXd positions = u.positions;
+    std::string note = "untangled in vertex variables (" + std::to_string(u.iterations) +
+                       " Newton steps, " + u.note + ")";
+    const Index after = invalid_simplices<D>(p, positions);
+    if (after >= before) {
+        result.fallback = note + ": no better than the result, which is kept";
+        return false;
+    }
+    result.times.optimization += watch.lap();
+    if (u.untangled && options.vertex_stage && !options.until_valid && !budget.exhausted()) {
+        const VertexStage vertex =
+            run_vertex_stage<D>(p.mesh, p.frames, p.assembly.energies, positions,
+                                fixed_vertices<D>(p), with_time_left(options, budget),
+                                observer.logger, VertexStageTerms<D>{{}, p.assembly.constraints});
+        if (vertex.ran) {
+            positions = vertex.positions;
+            result.vertex_stage_ran = true;
+            result.vertex_stage = vertex.newton;
+        }
+        result.vertex_stage_note = vertex.note;
+        note += vertex.ran
+                    ? ", then " + std::to_string(vertex.newton.num_steps()) + " in the vertex stage"
+                    : "; vertex stage " + vertex.note;
+        result.times.vertex_stage += watch.lap();
+    }
+    result.positions = p.to_original(positions);
+    result.fallback = note;
+    return true;
+}
+
+template UntangleResult untangle_prepared<2>(PreparedProblem<2>&, const SimplexAssemblyOptions&,
+                                             const TimeBudget&, const Eigen::MatrixXd&,
+                                             const Logger&);
+template UntangleResult untangle_prepared<3>(PreparedProblem<3>&, const SimplexAssemblyOptions&,
+                                             const TimeBudget&, const Eigen::MatrixXd&,
+                                             const Logger&);
+template bool untangle_fallback<2>(PreparedProblem<2>&, const SimplexAssemblyOptions&,
+                                   const TimeBudget&, const SimplexAssemblyObserver&,
+                                   SimplexAssemblyResult&);
+template bool untangle_fallback<3>(PreparedProblem<3>&, const SimplexAssemblyOptions&,
+                                   const TimeBudget&, const SimplexAssemblyObserver&,
+                                   SimplexAssemblyResult&);
+
+}  // namespace sa

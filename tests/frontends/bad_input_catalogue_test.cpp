@@ -1,0 +1,1142 @@
+// The bad-input catalogue (issue 25): one generated case per kind of bad input, for every reader
+// and every command of the `sa` executable, run as a user would. Each case writes its inputs into
+// a fresh folder, runs one command and checks
+//   - the exit status (README.md, "Exit status");
+//   - for an error, that stderr is one line `sa: error: ...` naming the file and line, or the
+//     option, that it is about;
+//   - that the folder holds exactly its inputs afterwards, unchanged: no output and no temporary
+//     (the hidden names outputs are written under) is left behind;
+//   - for the few kinds of input that must now succeed (a byte-order mark, a mesh at 1e200, a
+//     handle far away), the outputs and a verified result.
+// Interruptions and memory limits, which need a process to signal or a limit to set, come after.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fcntl.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <sstream>
+#include <thread>
+
+#include "geometry/io/mesh_file.h"
+#include "geometry/map_quality.h"
+#include "geometry/mesh_generators.h"
+#include "geometry/mesh_topology.h"
+
+extern char** environ;
+
+namespace sa {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Built with -fsanitize=address: the runtime reserves terabytes of address space, so that a
+// `ulimit -v` test cannot run.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+#else
+constexpr bool kSanitized = false;
+#endif
+
+std::string read_file(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+/// Every file under `folder`: relative path -> content (its size and a hash when large, so that
+/// a failure prints a short difference).
+std::map<std::string, std::string> snapshot(const fs::path& folder) {
+    std::map<std::string, std::string> files;
+    for (const auto& entry : fs::recursive_directory_iterator(folder)) {
+        const std::string name = fs::relative(entry.path(), folder).string();
+        if (!entry.is_regular_file()) {
+            files[name] = "<folder>";
+            continue;
+        }
+        const std::string content = read_file(entry.path());
+        files[name] = content.size() < 4096
+                          ? content
+                          : "<" + std::to_string(content.size()) + " bytes, hash " +
+                                std::to_string(std::hash<std::string>{}(content)) + ">";
+    }
+    return files;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Generated inputs.
+
+/// A plain-text problem: an n x n vertex grid of the unit square times `scale`, the initial map
+/// the rest shape with `moved` vertices elsewhere, and `handles`.
+std::string grid_problem(int n, const std::vector<int>& handles,
+                         const std::map<int, std::pair<double, double>>& moved = {},
+                         double scale = 1.0, int initial_dimension = 2) {
+    const SimplicialMesh mesh = grid_triangles(n - 1, n - 1);
+    std::ostringstream out;
+    out.precision(17);
+    out << mesh.num_vertices() << " 2\n";
+    for (Index v = 0; v < mesh.num_vertices(); ++v)
+        out << scale * mesh.vertices(v, 0) << ' ' << scale * mesh.vertices(v, 1) << '\n';
+    out << mesh.num_vertices() << ' ' << initial_dimension << '\n';
+    for (Index v = 0; v < mesh.num_vertices(); ++v) {
+        double x = scale * mesh.vertices(v, 0), y = scale * mesh.vertices(v, 1);
+        if (const auto it = moved.find(int(v)); it != moved.end()) {
+            x = it->second.first;
+            y = it->second.second;
+        }
+        out << x << ' ' << y;
+        if (initial_dimension == 3) out << (v == 1 ? " 0.5" : " 0");
+        out << '\n';
+    }
+    out << mesh.num_simplices() << " 3\n" << mesh.simplices << '\n';
+    out << handles.size() << '\n';
+    for (int h : handles) out << h << ' ';
+    out << '\n';
+    return out.str();
+}
+
+/// The boundary vertices of the n x n grid.
+std::vector<int> grid_boundary(int n) {
+    std::vector<int> boundary;
+    for (int v = 0; v < n * n; ++v) {
+        const int i = v % n, j = v / n;
+        if (i == 0 || j == 0 || i == n - 1 || j == n - 1) boundary.push_back(v);
+    }
+    return boundary;
+}
+
+/// A bumpy square in space: a disk surface for `sa param`, scaled by `scale`.
+SimplicialMesh bump(double scale = 1.0) {
+    SimplicialMesh mesh = grid_triangles(8, 8);
+    Eigen::MatrixXd lifted(mesh.num_vertices(), 3);
+    for (Index v = 0; v < mesh.num_vertices(); ++v) {
+        const double x = mesh.vertices(v, 0), y = mesh.vertices(v, 1);
+        lifted.row(v) << scale * x, scale * y, scale * 0.2 * std::sin(4.0 * x) * y;
+    }
+    mesh.vertices = lifted;
+    return mesh;
+}
+
+const std::string kGzip("\x1f\x8b\x08\x00\x00\x00\x00\x00\x00\x03\xcb\x48\xcd\xc9\xc9\x07\x00", 17);
+const std::string kBom = "\xEF\xBB\xBF";
+
+/// What a case writes into its folder before the command runs.
+class Inputs {
+  public:
+    explicit Inputs(fs::path folder) : folder_(std::move(folder)) {}
+    void text(const std::string& name, const std::string& content) const {
+        std::ofstream(folder_ / name, std::ios::binary) << content;
+    }
+    void mesh(const std::string& name, const SimplicialMesh& m) const {
+        write_mesh_file((folder_ / name).string(), m.vertices, m.simplices);
+    }
+    void folder(const std::string& name) const { fs::create_directories(folder_ / name); }
+    std::string read(const std::string& name) const { return read_file(folder_ / name); }
+
+  private:
+    fs::path folder_;
+};
+
+// A few inputs many cases share.
+void problem(const Inputs& in) {
+    in.text("p.txt", grid_problem(4, grid_boundary(4), {{5, {0.4, 0.5}}}));
+}
+void bump_off(const Inputs& in) {
+    in.mesh("bump.off", bump());
+}
+void sphere_off(const Inputs& in) {
+    in.mesh("sphere.off", sphere_triangles(3));
+}
+void tets_mesh(const Inputs& in) {
+    in.mesh("t.mesh", grid_tetrahedra(2, 2, 2));
+}
+
+struct Case {
+    std::string name;
+    std::function<void(const Inputs&)> inputs;
+    std::string command;  ///< `{D}` is replaced by the case's folder
+    int status;
+    std::vector<std::string> parts;         ///< in stderr's one line (errors) or stdout (successes)
+    std::vector<std::string> outputs = {};  ///< files a success writes
+    bool full_stdout = false;               ///< stdout goes to /dev/full
+};
+
+std::string expand(std::string text, const std::string& folder) {
+    for (std::size_t at; (at = text.find("{D}")) != std::string::npos;) text.replace(at, 3, folder);
+    return text;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The catalogue.
+
+std::vector<Case> catalogue() {
+    const auto none = [](const Inputs&) {};
+    std::vector<Case> cases = {
+        // The command line: one line, exit 2, before anything runs.
+        {"UnknownCommand", none, "frobnicate", 2, {"unknown command 'frobnicate' (expected map"}},
+        {"UnknownCommandWithHelp", none, "unmake --help", 2, {"unknown command 'unmake'"}},
+        {"NoCommand", none, "", 2, {"a command is required: map, demo"}},
+        {"MissingRequiredOption", problem, "map --rest {D}/p.txt", 2, {"--out is required"}},
+        {"UnknownOption", problem, "map --rest {D}/p.txt --out {D}/o.vtu --frob 1", 2, {"--frob"}},
+        {"NotANumber",
+         problem,
+         "map --rest {D}/p.txt --out {D}/o.vtu --max-iterations abc",
+         2,
+         {"--max-iterations", "'abc'"}},
+        {"NegativeSeed",
+         problem,
+         "map --rest {D}/p.txt --out {D}/o.vtu --seed -1",
+         2,
+         {"--seed: must be an integer >= 0, found '-1'"}},
+        {"ZeroMaxTime",
+         problem,
+         "map --rest {D}/p.txt --out {D}/o.vtu --max-time 0",
+         2,
+         {"--max-time: must be a number or inf > 0"}},
+        {"NanMu", problem, "map --rest {D}/p.txt --out {D}/o.vtu --mu nan", 2, {"--mu", "'nan'"}},
+        {"ZeroS", problem, "map --rest {D}/p.txt --out {D}/o.vtu --s 0", 2, {"--s: must be"}},
+        {"LowLambdaMax",
+         problem,
+         "map --rest {D}/p.txt --out {D}/o.vtu --lambda-max 1",
+         2,
+         {"--lambda-max: must be a finite number >= 1000"}},
+        {"NegativeTranslationShift",
+         problem,
+         "map --rest {D}/p.txt --out {D}/o.vtu --translation-shift -1",
+         2,
+         {"--translation-shift"}},
+        {"MaxRingsBelowRings",
+         problem,
+         "map --rest {D}/p.txt --out {D}/o.vtu --rings 5 --max-rings 3",
+         2,
+         {"--max-rings 3: must be >= --rings (5)"}},
+        {"BoundBelowOne",
+         problem,
+         "map --rest {D}/p.txt --out {D}/o.vtu --bound 0.9",
+         2,
+         {"--bound 0.9: expected a number > 1"}},
+        {"UnknownDistortion",
+         problem,
+         "map --rest {D}/p.txt --out {D}/o.vtu --distortion frob",
+         2,
+         {"--distortion frob: unknown distortion 'frob'"}},
+        {"UnknownEnergy",
+         problem,
+         "map --rest {D}/p.txt --out {D}/o.vtu --energy frob",
+         2,
+         {"--energy frob: unknown distortion 'frob'"}},
+        {"UnknownMode",
+         problem,
+         "map --rest {D}/p.txt --out {D}/o.vtu --mode frob",
+         2,
+         {"--mode frob: unknown mode 'frob'"}},
+        {"NegativeParamRounds",
+         bump_off,
+         "param --mesh {D}/bump.off --out {D}/uv.obj --optimal-bound --optimal-bound-rounds -1",
+         2,
+         {"--optimal-bound-rounds: must be an integer >= 1"}},
+        {"ParamRoundsWithoutOptimalBound",
+         bump_off,
+         "param --mesh {D}/bump.off --out {D}/uv.obj --optimal-bound-rounds 3",
+         2,
+         {"--optimal-bound-rounds requires --optimal-bound"}},
+        {"NegativeParamThreads",
+         bump_off,
+         "param --mesh {D}/bump.off --out {D}/uv.obj --threads -1",
+         2,
+         {"--threads: must be an integer >= 0"}},
+        {"SeamlessZeroScale",
+         sphere_off,
+         "seamless --mesh {D}/sphere.off --out {D}/s.obj --scale 0",
+         2,
+         {"--scale: must be a finite number > 0, found '0'"}},
+        {"SeamlessZeroIterations",
+         sphere_off,
+         "seamless --mesh {D}/sphere.off --out {D}/s.obj --max-iterations 0",
+         2,
+         {"--max-iterations: must be an integer >= 1"}},
+        {"SubdivideTooManyLevels",
+         bump_off,
+         "subdivide --mesh {D}/bump.off --out {D}/s.obj --levels 9",
+         2,
+         {"--levels"}},
+        {"DemoNegativeThreads", none, "demo --out-dir {D}/demo --threads -1", 2, {"--threads"}},
+
+        // Output locations: checked before anything is read or solved.
+        {"OutAndReportTheSame",
+         problem,
+         "map --rest {D}/p.txt --out {D}/same.json --report {D}/same.json",
+         2,
+         {"--out and --report name the same file"}},
+        {"ParamOutAndLayoutTheSame",
+         bump_off,
+         "param --mesh {D}/bump.off --out {D}/uv.vtu --layout {D}/./uv.vtu",
+         2,
+         {"--out and --layout name the same file"}},
+        {"SeamlessVtuAndReportTheSame",
+         sphere_off,
+         "seamless --mesh {D}/sphere.off --out {D}/s.obj --vtu {D}/r.vtu --report {D}/r.vtu",
+         2,
+         {"--vtu and --report name the same file"}},
+        {"OutInMissingFolder",
+         problem,
+         "map --rest {D}/p.txt --out {D}/missing/o.vtu",
+         2,
+         {"--out {D}/missing/o.vtu: folder '{D}/missing' does not exist"}},
+        {"ReportUnderARegularFile",
+         problem,
+         "map --rest {D}/p.txt --out {D}/o.vtu --report {D}/p.txt/r.json",
+         2,
+         {"--report {D}/p.txt/r.json: '{D}/p.txt' is not a folder"}},
+        {"OutIsADirectory",
+         [](const Inputs& in) {
+             problem(in);
+             in.folder("o.vtu");
+         },
+         "map --rest {D}/p.txt --out {D}/o.vtu",
+         2,
+         {"--out {D}/o.vtu: is a directory"}},
+        {"OutIsTheInput",
+         problem,
+         "map --rest {D}/p.txt --out {D}/p.txt --force",
+         2,
+         {"--out {D}/p.txt is the input of --rest"}},
+        {"OutExistsWithoutForce",
+         [](const Inputs& in) {
+             problem(in);
+             in.text("o.vtu", "precious");
+         },
+         "map --rest {D}/p.txt --out {D}/o.vtu",
+         2,
+         {"{D}/o.vtu exists; pass --force"}},
+        {"RecordIsAFile",
+         [](const Inputs& in) {
+             problem(in);
+             in.text("rec", "not a folder");
+         },
+         "map --rest {D}/p.txt --out {D}/o.vtu --record {D}/rec",
+         2,
+         {"--record {D}/rec: exists and is not a folder"}},
+        {"RecordIsTheInput",
+         problem,
+         "map --rest {D}/p.txt --out {D}/o.vtu --record {D}/p.txt",
+         2,
+         {"--record {D}/p.txt is the input of --rest"}},
+        {"TrianglesAsNode",
+         problem,
+         "map --rest {D}/p.txt --out {D}/o.node",
+         2,
+         {"o.node: .node holds tetrahedra"}},
+        {"OutAsPly", problem, "map --rest {D}/p.txt --out {D}/o.ply", 2, {"is read, not written"}},
+        {"ParamOutFormat",
+         bump_off,
+         "param --mesh {D}/bump.off --out {D}/uv.off",
+         2,
+         {"uv.off: the parameterized surface is written as .obj, .vtu or .vtk"}},
+        {"SeamlessOutFormat",
+         sphere_off,
+         "seamless --mesh {D}/sphere.off --out {D}/s.vtu",
+         2,
+         {"s.vtu: the seamless map is written as .obj"}},
+        {"DemoOutDirIsAFile",
+         [](const Inputs& in) { in.text("demo", "x"); },
+         "demo --out-dir {D}/demo",
+         2,
+         {"--out-dir {D}/demo: exists and is not a folder"}},
+        {"SubdivideOutMissingFolder",
+         bump_off,
+         "subdivide --mesh {D}/bump.off --out {D}/no/s.obj",
+         2,
+         {"--out {D}/no/s.obj: folder '{D}/no' does not exist"}},
+
+        // Input files that are not files.
+        {"MissingRest",
+         none,
+         "map --rest {D}/absent.txt --out {D}/o.vtu",
+         2,
+         {"{D}/absent.txt: cannot open (No such file or directory)"}},
+        {"InitIsAFolder",
+         [](const Inputs& in) {
+             problem(in);
+             in.folder("init");
+         },
+         "map --rest {D}/p.txt --init {D}/init --out {D}/o.vtu",
+         2,
+         {"{D}/init: cannot open (Is a directory)"}},
+        {"TargetsIsAFolder",
+         [](const Inputs& in) {
+             problem(in);
+             in.folder("targets");
+         },
+         "map --rest {D}/p.txt --targets {D}/targets --out {D}/o.vtu",
+         2,
+         {"{D}/targets: cannot open (Is a directory)"}},
+        {"ParamInitIsAFolder",
+         [](const Inputs& in) {
+             bump_off(in);
+             in.folder("init");
+         },
+         "param --mesh {D}/bump.off --init {D}/init --out {D}/uv.obj",
+         2,
+         {"{D}/init: cannot open (Is a directory)"}},
+        {"HandlesIsAFolder",
+         [](const Inputs& in) {
+             problem(in);
+             in.folder("h");
+         },
+         "map --rest {D}/p.txt --handles {D}/h --out {D}/o.vtu",
+         2,
+         {"{D}/h: cannot open (Is a directory)"}},
+        {"FieldIsAFolder",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.folder("f.dmat");
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.dmat --out {D}/s.obj",
+         2,
+         {"{D}/f.dmat: cannot open (Is a directory)"}},
+
+        // The plain-text problem.
+        {"ProblemBadNumber",
+         [](const Inputs& in) { in.text("p.txt", "3 2\n0 0\n1 x\n0 1\n"); },
+         "map --rest {D}/p.txt --out {D}/o.vtu",
+         2,
+         {"{D}/p.txt:3:", "'x'"}},
+        {"ProblemShortRow",
+         [](const Inputs& in) { in.text("p.txt", "3 2\n0 0\n1\n0 1\n"); },
+         "map --rest {D}/p.txt --out {D}/o.vtu",
+         2,
+         {"{D}/p.txt:3: expected 2 coordinates"}},
+        {"ProblemIndexOutOfRange",
+         [](const Inputs& in) {
+             in.text("p.txt", "3 2\n0 0\n1 0\n0 1\n3 2\n0 0\n1 0\n0 1\n1 3\n0 1 3\n");
+         },
+         "map --rest {D}/p.txt --out {D}/o.vtu",
+         2,
+         {"{D}/p.txt:10: vertex 3 out of range"}},
+        {"ProblemRepeatedHandle",
+         [](const Inputs& in) {
+             in.text("p.txt", "3 2\n0 0\n1 0\n0 1\n3 2\n0 0\n1 0\n0 1\n1 3\n0 1 2\n2\n1\n1\n");
+         },
+         "map --rest {D}/p.txt --out {D}/o.vtu",
+         2,
+         {"{D}/p.txt:13: handle 1 repeated (first on line 12)"}},
+        {"ProblemEndsEarly",
+         [](const Inputs& in) { in.text("p.txt", "3 2\n0 0\n1 0\n"); },
+         "map --rest {D}/p.txt --out {D}/o.vtu",
+         2,
+         {"{D}/p.txt: file ends after 2 of 3"}},
+        {"ProblemHugeCount",
+         [](const Inputs& in) { in.text("p.txt", "2000000000 2\n0 0\n"); },
+         "map --rest {D}/p.txt --out {D}/o.vtu",
+         2,
+         {"{D}/p.txt: file ends after 1 of 2000000000"}},
+        {"ProblemPlanarRestSpatialInit",
+         [](const Inputs& in) {
+             in.text("p.txt", grid_problem(3, {0, 8}, {}, 1.0, 3));
+         },
+         "map --rest {D}/p.txt --out {D}/o.vtu",
+         2,
+         {"{D}/p.txt:13: initial position of vertex 1 has z = 0.5",
+          "the rest shape is 2D (header on line 11)"}},
+        {"ProblemGzip",
+         [](const Inputs& in) { in.text("p.txt", kGzip); },
+         "map --rest {D}/p.txt --out {D}/o.vtu",
+         2,
+         {"{D}/p.txt:1: not a text file (byte 0x1f"}},
+        {"ProblemDegenerateRest",
+         [](const Inputs& in) {
+             in.text("p.txt", "3 2\n0 0\n1 0\n2 0\n3 2\n0 0\n1 0\n2 0\n1 3\n0 1 2\n");
+         },
+         "map --rest {D}/p.txt --out {D}/o.vtu",
+         2,
+         {"{D}/p.txt: simplex 0 is degenerate in the rest shape"}},
+        {"InitialCoordinateOverflows",
+         [](const Inputs& in) {
+             in.text("p.txt", grid_problem(4, grid_boundary(4), {{5, {1e308, 0.3}}}));
+         },
+         "map --rest {D}/p.txt --out {D}/o.vtu",
+         2,
+         {"{D}/p.txt: the initial map's affine part of simplex", "not finite"}},
+
+        // Result records given as --init.
+        {"ResultWithoutResV",
+         [](const Inputs& in) {
+             problem(in);
+             in.text("r.res", "resX 2\n1 2\n# no resV record\n");
+         },
+         "map --rest {D}/p.txt --init {D}/r.res --out {D}/o.vtu",
+         2,
+         {"{D}/r.res: no 'resV n d' record"}},
+        {"ResultWrongValueCount",
+         [](const Inputs& in) {
+             problem(in);
+             in.text("r.res", "resV 16 2\n1 2 3\n");
+         },
+         "map --rest {D}/p.txt --init {D}/r.res --out {D}/o.vtu",
+         2,
+         {"{D}/r.res:2: expected 32 values"}},
+        {"ResultWrongRowCount",
+         [](const Inputs& in) {
+             problem(in);
+             in.text("r.res", "resV 2 2\n1 2 3 4\n");
+         },
+         "map --rest {D}/p.txt --init {D}/r.res --out {D}/o.vtu",
+         2,
+         {"{D}/r.res: 2 positions, the mesh has 16 vertices"}},
+
+        // Handle lists.
+        {"HandleCountCommentDisagrees",
+         [](const Inputs& in) {
+             problem(in);
+             in.text("h.txt", "4 # handles\n0\n1\n");
+         },
+         "map --rest {D}/p.txt --handles {D}/h.txt --out {D}/o.vtu",
+         2,
+         {"{D}/h.txt:1: count header says 4 but 2 indices follow"}},
+        {"HandleCountAmbiguous",
+         [](const Inputs& in) {
+             problem(in);
+             in.text("h.txt", "3\n0 1\n2 3\n");
+         },
+         "map --rest {D}/p.txt --handles {D}/h.txt --out {D}/o.vtu",
+         2,
+         {"{D}/h.txt:1: the first line holds one number, 3, apart from the 4 indices"}},
+        {"HandleOutOfRange",
+         [](const Inputs& in) {
+             problem(in);
+             in.text("h.txt", "0 99\n");
+         },
+         "map --rest {D}/p.txt --handles {D}/h.txt --out {D}/o.vtu",
+         2,
+         {"{D}/h.txt: handle vertex 99 outside [0, 16)"}},
+        {"HandleNegative",
+         [](const Inputs& in) {
+             problem(in);
+             in.text("h.txt", "0\n-2\n");
+         },
+         "map --rest {D}/p.txt --handles {D}/h.txt --out {D}/o.vtu",
+         2,
+         {"{D}/h.txt:2: index -2 is negative"}},
+        {"HandleGzip",
+         [](const Inputs& in) {
+             problem(in);
+             in.text("h.txt", kGzip);
+         },
+         "map --rest {D}/p.txt --handles {D}/h.txt --out {D}/o.vtu",
+         2,
+         {"{D}/h.txt:1: not a text file"}},
+        {"GarbageMeshWithHandles",
+         [](const Inputs& in) {
+             in.text("g.obj", "this is no mesh\n");
+             in.text("h.txt", "0 1 2\n");
+         },
+         "map --rest {D}/g.obj --handles {D}/h.txt --out {D}/o.vtu",
+         2,
+         {"{D}/g.obj: the mesh has no vertices"}},
+
+        // OBJ, OFF, Medit, TetGen, VTK, PLY, STL.
+        {"ObjQuad",
+         [](const Inputs& in) {
+             in.text("q.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+         },
+         "param --mesh {D}/q.obj --out {D}/uv.obj",
+         2,
+         {"{D}/q.obj:5: face with 4 vertices; only triangles"}},
+        {"ObjIndexZero",
+         [](const Inputs& in) { in.text("z.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"); },
+         "param --mesh {D}/z.obj --out {D}/uv.obj",
+         2,
+         {"{D}/z.obj:4: vertex index 0"}},
+        {"ObjGzip",
+         [](const Inputs& in) { in.text("g.obj", kGzip); },
+         "param --mesh {D}/g.obj --out {D}/uv.obj",
+         2,
+         {"{D}/g.obj:1: not a text file"}},
+        {"OffBadHeader",
+         [](const Inputs& in) { in.text("b.off", "PLY\n3 1 0\n"); },
+         "param --mesh {D}/b.off --out {D}/uv.obj",
+         2,
+         {"{D}/b.off:1: expected the header 'OFF'"}},
+        {"OffFaceOutOfRange",
+         [](const Inputs& in) { in.text("b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"); },
+         "param --mesh {D}/b.off --out {D}/uv.obj",
+         2,
+         {"{D}/b.off:6: vertex 7 out of range"}},
+        {"OffHugeCount",
+         [](const Inputs& in) { in.text("b.off", "OFF\n2000000000 1 0\n0 0 0\n"); },
+         "param --mesh {D}/b.off --out {D}/uv.obj",
+         2,
+         {"{D}/b.off: file ends after 1 of 2000000000 vertices"}},
+        {"MeditUnknownKeyword",
+         [](const Inputs& in) { in.text("m.mesh", "MeshVersionFormatted 2\nDimension 3\nFrob\n"); },
+         "param --mesh {D}/m.mesh --out {D}/uv.obj",
+         2,
+         {"{D}/m.mesh:3: unknown keyword 'Frob'"}},
+        {"MeditVertexOutOfRange",
+         [](const Inputs& in) {
+             in.text("m.mesh",
+                     "MeshVersionFormatted 2\nDimension 3\nVertices\n3\n0 0 0 0\n1 0 0 0\n0 1 0 "
+                     "0\nTriangles\n1\n1 2 4 0\nEnd\n");
+         },
+         "param --mesh {D}/m.mesh --out {D}/uv.obj",
+         2,
+         {"{D}/m.mesh:10: vertex 4 out of range"}},
+        {"TetgenRowOutOfSequence",
+         [](const Inputs& in) {
+             in.text("t.node", "2 3 0 0\n0 0 0 0\n5 1 0 0\n");
+             in.text("t.ele", "0 4 0\n");
+         },
+         "map --rest {D}/t.node --targets {D}/t.node --out {D}/o.vtu",
+         2,
+         {"{D}/t.node:3: row index 5 out of sequence"}},
+        {"TetgenEleMissing",
+         [](const Inputs& in) { in.text("t.node", "1 3 0 0\n0 0 0 0\n"); },
+         "map --rest {D}/t.node --targets {D}/t.node --out {D}/o.vtu",
+         2,
+         {"{D}/t.ele: cannot open (No such file or directory)"}},
+        {"VtkNotVtk",
+         [](const Inputs& in) { in.text("v.vtk", "hello\n"); },
+         "param --mesh {D}/v.vtk --out {D}/uv.obj",
+         2,
+         {"{D}/v.vtk:1: expected '# vtk DataFile Version x.y', found 'hello'"}},
+        {"VtkGzip",
+         [](const Inputs& in) { in.text("v.vtk", kGzip); },
+         "param --mesh {D}/v.vtk --out {D}/uv.obj",
+         2,
+         {"{D}/v.vtk: not a text file (byte 0x1f"}},
+        {"VtkQuads",
+         [](const Inputs& in) {
+             in.text("v.vtk",
+                     "# vtk DataFile Version 3.0\nq\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 "
+                     "double\n0 0 0\n1 0 0\n1 1 0\n0 1 0\nCELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n9\n");
+         },
+         "param --mesh {D}/v.vtk --out {D}/uv.obj",
+         2,
+         {"{D}/v.vtk: cell 0 has type 9 (vtkQuad)"}},
+        {"VtuGzip",
+         [](const Inputs& in) { in.text("v.vtu", kGzip); },
+         "param --mesh {D}/v.vtu --out {D}/uv.obj",
+         2,
+         {"{D}/v.vtu: not a text file (byte 0x1f"}},
+        {"VtuNotXml",
+         [](const Inputs& in) { in.text("v.vtu", "hello\n"); },
+         "param --mesh {D}/v.vtu --out {D}/uv.obj",
+         2,
+         {"{D}/v.vtu: not a VTU (XML) file: it does not start with '<'"}},
+        {"PlyNotPly",
+         [](const Inputs& in) { in.text("p.ply", "hello\n"); },
+         "param --mesh {D}/p.ply --out {D}/uv.obj",
+         2,
+         {"{D}/p.ply:1: not a PLY file: expected 'ply', found 'hello'"}},
+        {"PlyQuad",
+         [](const Inputs& in) {
+             in.text("p.ply",
+                     "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float "
+                     "y\nproperty float z\nelement face 1\nproperty list uchar int "
+                     "vertex_indices\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
+         },
+         "param --mesh {D}/p.ply --out {D}/uv.obj",
+         2,
+         {"{D}/p.ply: face 0 with 4 vertices"}},
+        {"PlyPropertyBeforeElement",
+         [](const Inputs& in) {
+             in.text("p.ply",
+                     "ply\nformat ascii 1.0\nelemXnt vertex 3\nproperty float x\nend_header\n");
+         },
+         "param --mesh {D}/p.ply --out {D}/uv.obj",
+         2,
+         {"{D}/p.ply:3: not a PLY header line: 'elemXnt'"}},
+        {"PlyNoEndHeader",
+         [](const Inputs& in) { in.text("p.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"); },
+         "param --mesh {D}/p.ply --out {D}/uv.obj",
+         2,
+         {"{D}/p.ply: the PLY header has no 'end_header' line"}},
+        {"StlNotStl",
+         [](const Inputs& in) { in.text("s.stl", "hello\n"); },
+         "param --mesh {D}/s.stl --out {D}/uv.obj",
+         2,
+         {"{D}/s.stl: not an STL file"}},
+        {"StlGzip",
+         [](const Inputs& in) { in.text("s.stl", kGzip); },
+         "param --mesh {D}/s.stl --out {D}/uv.obj",
+         2,
+         {"{D}/s.stl: not an STL file", "found binary data"}},
+
+        // Frame fields.
+        {"DmatShort",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.text("f.dmat", "3 2\n1\n0\n");
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.dmat --out {D}/s.obj",
+         2,
+         {"{D}/f.dmat: file ends after 2 of 6 values"}},
+        {"DmatGzip",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.text("f.dmat", kGzip);
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.dmat --out {D}/s.obj",
+         2,
+         {"{D}/f.dmat:1: not a text file"}},
+        {"CrossfieldWrongFaceCount",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.text("f.crossfield", "2 5\n");
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.crossfield --out {D}/s.obj",
+         2,
+         {"{D}/f.crossfield:1: header gives 5 faces; expected 72"}},
+        {"FieldAndConstraints",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.text("f.dmat", "1 1\n0\n");
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.dmat --constraints {D}/f.dmat {D}/f.dmat "
+         "--out {D}/s.obj",
+         2,
+         {"give --field or --constraints, not both"}},
+        {"RawfieldNotAFrameField",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.text("f.rawfield", "2 72\n");
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.rawfield --out {D}/s.obj",
+         2,
+         {"{D}/f.rawfield:1: N = 2 vectors per face"}},
+        {"RawfieldWrongFaceCount",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.text("f.rawfield", "4 5\n");
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.rawfield --out {D}/s.obj",
+         2,
+         {"{D}/f.rawfield:1: header gives 5 faces; expected 72"}},
+        {"RawfieldShortRow",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.text("f.rawfield", "4 72\n1 0 0 0 1 0\n");
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.rawfield --out {D}/s.obj",
+         2,
+         {"{D}/f.rawfield:2: face 0: expected 12 numbers", "found 6"}},
+        {"RawfieldNotSymmetric",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.text("f.rawfield", "4 72\n1 0 0 0 1 0 1 0 0 0 -1 0\n");
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.rawfield --out {D}/s.obj",
+         2,
+         {"{D}/f.rawfield:2: face 0: the third and fourth vectors are not -u and -v"}},
+        {"RawfieldEndsEarly",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.text("f.rawfield", "4 72\n1 0 0 0 1 0 -1 0 0 0 -1 0\n");
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.rawfield --out {D}/s.obj",
+         2,
+         {"{D}/f.rawfield: file ends after 1 of 72 faces"}},
+        {"RawfieldNotANumber",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.text("f.rawfield", "4 72\n1 0 0 0 1 0 -1 0 0 0 -1 zero\n");
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.rawfield --out {D}/s.obj",
+         2,
+         {"{D}/f.rawfield:2:", "zero"}},
+        {"RawfieldGzip",
+         [](const Inputs& in) {
+             sphere_off(in);
+             in.text("f.rawfield", kGzip);
+         },
+         "seamless --mesh {D}/sphere.off --field {D}/f.rawfield --out {D}/s.obj",
+         2,
+         {"{D}/f.rawfield:1: not a text file"}},
+
+        // Meshes the commands cannot take, named by their file.
+        {"ParamNotADisk",
+         [](const Inputs& in) { in.mesh("s.off", sphere_triangles(2)); },
+         "param --mesh {D}/s.off --out {D}/uv.obj",
+         2,
+         {"{D}/s.off: the mesh is closed"}},
+        {"ParamTetrahedra",
+         tets_mesh,
+         "param --mesh {D}/t.mesh --out {D}/uv.obj",
+         2,
+         {"{D}/t.mesh: a parameterization needs a triangle mesh"}},
+        {"SeamlessNonManifold",
+         [](const Inputs& in) {
+             in.text("n.obj",
+                     "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf "
+                     "1 2 5\n");
+         },
+         "seamless --mesh {D}/n.obj --out {D}/s.obj",
+         2,
+         {"{D}/n.obj: the mesh is not manifold"}},
+        {"SeamlessFlipped",
+         [](const Inputs& in) {
+             SimplicialMesh s = sphere_triangles(2);
+             std::swap(s.simplices(0, 1), s.simplices(0, 2));
+             in.mesh("f.off", s);
+         },
+         "seamless --mesh {D}/f.off --out {D}/s.obj",
+         2,
+         {"{D}/f.off: triangles", "oriented inconsistently"}},
+        {"SubdivideTetrahedra",
+         tets_mesh,
+         "subdivide --mesh {D}/t.mesh --out {D}/s.obj",
+         2,
+         {"{D}/t.mesh: Loop subdivision needs a triangle mesh"}},
+        {"MapTetrahedraToObj",
+         [](const Inputs& in) { tets_mesh(in); },
+         "map --rest {D}/t.mesh --targets {D}/t.mesh --out {D}/o.obj",
+         2,
+         {"o.obj: .obj holds triangles"}},
+
+        // Standard output that cannot be written.
+        {"StdoutFull",
+         problem,
+         "map --rest {D}/p.txt --out {D}/o.vtu --quiet",
+         2,
+         {"cannot write to standard output (No space left on device)"},
+         {"o.vtu"},
+         true},
+
+        // Inputs that must succeed, verified.
+        {"ProblemWithByteOrderMark",
+         [](const Inputs& in) { in.text("p.txt", kBom + grid_problem(4, grid_boundary(4))); },
+         "map --rest {D}/p.txt --out {D}/o.obj --quiet",
+         0,
+         {"success: verified"},
+         {"o.obj"}},
+        {"ObjWithByteOrderMark",
+         [](const Inputs& in) {
+             in.text("bump.obj", kBom + "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0.1\nf 1 2 3\nf 2 4 3\n");
+         },
+         "param --mesh {D}/bump.obj --out {D}/uv.obj --quiet",
+         0,
+         {"2 triangles, 4 vertices"},
+         {"uv.obj"}},
+        {"OffWithByteOrderMark",
+         [](const Inputs& in) {
+             bump_off(in);
+             in.text("b.off", kBom + in.read("bump.off"));
+         },
+         "param --mesh {D}/b.off --out {D}/uv.obj --quiet",
+         0,
+         {"success: verified"},
+         {"uv.obj"}},
+        {"HandlesOnTheFirstLine",
+         [](const Inputs& in) {
+             in.text("p.txt", grid_problem(6, {0, 5, 30, 35}));
+             in.text("h.txt", "3 10 20 30\n");
+         },
+         "map --rest {D}/p.txt --handles {D}/h.txt --out {D}/o.obj --quiet",
+         0,
+         {"4 handles", "success: verified"},
+         {"o.obj"}},
+        {"MeshAt1e200",
+         [](const Inputs& in) {
+             in.text("p.txt", grid_problem(4, grid_boundary(4), {{5, {0.9e200, 0.9e200}}}, 1e200));
+         },
+         "map --rest {D}/p.txt --out {D}/o.obj --quiet",
+         0,
+         {"result:      0 inverted, 0 degenerate; conformal max 1 ", "success: verified"},
+         {"o.obj"}},
+        {"MeshAt1eMinus200",
+         [](const Inputs& in) {
+             in.text("p.txt",
+                     grid_problem(4, grid_boundary(4), {{5, {0.9e-200, 0.9e-200}}}, 1e-200));
+         },
+         "map --rest {D}/p.txt --out {D}/o.obj --quiet",
+         0,
+         {"result:      0 inverted, 0 degenerate; conformal max 1 ", "success: verified"},
+         {"o.obj"}},
+        {"SurfaceAt1e200",
+         [](const Inputs& in) { in.mesh("b.off", bump(1e200)); },
+         "param --mesh {D}/b.off --out {D}/uv.obj --quiet",
+         0,
+         {"success: verified"},
+         {"uv.obj"}},
+        {"SurfaceAt1eMinus200",
+         [](const Inputs& in) { in.mesh("b.off", bump(1e-200)); },
+         "param --mesh {D}/b.off --out {D}/uv.obj --quiet",
+         0,
+         {"success: verified"},
+         {"uv.obj"}},
+    };
+    // A corner moved far from a 3 x 3 grid whose boundary is fixed: the initial map is
+    // inversion-free, so the problem is solvable. (Beyond about 1e14 the verification calls the
+    // unit triangles degenerate: its test is relative to the largest simplex of the map.)
+    for (const auto& [name, far] : std::vector<std::pair<std::string, double>>{
+             {"30", 30.0}, {"1e3", 1e3}, {"1e6", 1e6}, {"1e12", 1e12}}) {
+        cases.push_back({"HandleMovedTo" + name,
+                         [far](const Inputs& in) {
+                             in.text("p.txt", grid_problem(3, grid_boundary(3), {{8, {far, far}}}));
+                         },
+                         "map --rest {D}/p.txt --out {D}/o.obj --quiet",
+                         0,
+                         {"success: verified"},
+                         {"o.obj"}});
+    }
+    // Two handles, one moved far: the best map is a similarity.
+    cases.push_back({"TwoHandlesFarApart",
+                     [](const Inputs& in) {
+                         in.text("p.txt", grid_problem(3, {0, 8}, {{8, {1e6, 1e6}}}));
+                     },
+                     "map --rest {D}/p.txt --out {D}/o.obj --quiet",
+                     0,
+                     {"conformal max 1 ", "success: verified"},
+                     {"o.obj"}});
+    return cases;
+}
+
+void PrintTo(const Case& c, std::ostream* out) {
+    *out << c.name;
+}
+
+class BadInputCatalogue : public ::testing::TestWithParam<Case> {
+  protected:
+    void SetUp() override {
+        base_ = fs::temp_directory_path() /
+                ("sa_catalogue_" + std::to_string(::getpid()) + "_" + GetParam().name);
+        fs::remove_all(base_);
+        folder_ = base_ / "case";
+        fs::create_directories(folder_);
+    }
+    void TearDown() override { fs::remove_all(base_); }
+
+    fs::path base_, folder_;
+};
+
+TEST_P(BadInputCatalogue, OneLineTheRightStatusAndNothingLeft) {
+    const Case& c = GetParam();
+    const std::string folder = folder_.string();
+    c.inputs(Inputs(folder_));
+    const std::map<std::string, std::string> before = snapshot(folder_);
+    const std::string out = (base_ / "stdout").string(), err = (base_ / "stderr").string();
+    const std::string command = std::string(SA_EXECUTABLE) + " " + expand(c.command, folder) +
+                                (c.full_stdout ? " > /dev/full" : " > " + out) + " 2> " + err;
+    const int code = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(code)) << command;
+    const std::string printed = read_file(out), errors = read_file(err);
+    EXPECT_EQ(WEXITSTATUS(code), c.status) << command << "\n" << printed << errors;
+
+    std::map<std::string, std::string> after = snapshot(folder_);
+    if (c.status == 2) {
+        EXPECT_EQ(std::count(errors.begin(), errors.end(), '\n'), 1) << errors;
+        EXPECT_EQ(errors.rfind("sa: error: ", 0), 0u) << errors;
+        for (const std::string& part : c.parts)
+            EXPECT_NE(errors.find(expand(part, folder)), std::string::npos)
+                << "'" << expand(part, folder) << "' not in: " << errors;
+    } else {
+        for (const std::string& part : c.parts)
+            EXPECT_NE(printed.find(part), std::string::npos) << part << " not in: " << printed;
+    }
+    for (const std::string& output : c.outputs) {
+        EXPECT_TRUE(after.count(output)) << output << " was not written";
+        after.erase(output);
+    }
+    // Nothing else: no output, no hidden temporary, every input unchanged.
+    EXPECT_EQ(after, before) << command;
+}
+
+INSTANTIATE_TEST_SUITE_P(Sa, BadInputCatalogue, ::testing::ValuesIn(catalogue()),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                             return info.param.name;
+                         });
+
+// ---------------------------------------------------------------------------------------------
+// Interruptions: the process gets the signal while it writes (or records), and afterwards the
+// folder holds only the inputs.
+
+class Interruption : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        folder_ = fs::temp_directory_path() /
+                  ("sa_interruption_" + std::to_string(::getpid()) + "_" +
+                   ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(folder_);
+        fs::create_directories(folder_);
+    }
+    void TearDown() override { fs::remove_all(folder_); }
+
+    /// Starts `sa` with `arguments` (stdout and stderr to /dev/null), with default signal
+    /// dispositions, as from an interactive shell.
+    pid_t start(const std::vector<std::string>& arguments) {
+        std::vector<std::string> args = {SA_EXECUTABLE};
+        args.insert(args.end(), arguments.begin(), arguments.end());
+        std::vector<char*> argv;
+        for (std::string& a : args) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        posix_spawn_file_actions_t actions;
+        posix_spawn_file_actions_init(&actions);
+        posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+        posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+        posix_spawnattr_t attributes;
+        posix_spawnattr_init(&attributes);
+        sigset_t defaults;
+        sigemptyset(&defaults);
+        for (int s : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) sigaddset(&defaults, s);
+        posix_spawnattr_setsigdefault(&attributes, &defaults);
+        posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
+        pid_t pid = -1;
+        EXPECT_EQ(posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), environ), 0);
+        posix_spawn_file_actions_destroy(&actions);
+        posix_spawnattr_destroy(&attributes);
+        return pid;
+    }
+
+    /// Waits until `ready()` (polling), the process ends or two minutes pass; true when ready()
+    /// held. Does not reap the process (so that its pid stays its own until waitpid).
+    static bool wait_until(pid_t pid, const std::function<bool()>& ready) {
+        const auto limit = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+        while (std::chrono::steady_clock::now() < limit) {
+            if (ready()) return true;
+            siginfo_t info{};
+            if (waitid(P_PID, pid, &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == pid)
+                return false;
+            std::this_thread::sleep_for(std::chrono::microseconds(200));
+        }
+        return false;
+    }
+
+    /// Any hidden file (an output being written) in the folder tree.
+    bool writing() const {
+        for (const auto& entry : fs::recursive_directory_iterator(folder_)) {
+            if (entry.path().filename().string().rfind(".", 0) == 0) return true;
+        }
+        return false;
+    }
+
+    fs::path folder_;
+};
+
+TEST_F(Interruption, WhileWritingLeavesNoFile) {
+    // A large output, so that the signal arrives while it is written.
+    const SimplicialMesh big = grid_triangles(300, 300);
+    write_mesh_file((folder_ / "big.off").string(), big.vertices, big.simplices);
+    const auto before = snapshot(folder_);
+    for (const int signal : {SIGTERM, SIGINT}) {
+        SCOPED_TRACE(signal);
+        const pid_t pid = start({"subdivide", "--mesh", (folder_ / "big.off").string(), "--levels",
+                                 "1", "--out", (folder_ / "fine.obj").string()});
+        ASSERT_GT(pid, 0);
+        const bool caught = wait_until(pid, [&] { return writing(); });
+        kill(pid, signal);
+        int status = 0;
+        waitpid(pid, &status, 0);
+        if (!caught) {
+            ADD_FAILURE() << "the command ended before it wrote";
+            continue;
+        }
+        EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal) << status;
+        EXPECT_EQ(snapshot(folder_), before);
+    }
+}
+
+TEST_F(Interruption, WhileRecordingRemovesTheRecording) {
+    // A folded grid: the assembly records a frame per iteration.
+    const int n = 40;
+    std::vector<int> handles = grid_boundary(n);
+    std::map<int, std::pair<double, double>> moved;
+    for (int v = 0; v < n * n; ++v) {
+        const int i = v % n, j = v / n;
+        if (i > 0 && j > 0 && i < n - 1 && j < n - 1)
+            moved[v] = {0.5 + 0.3 * std::sin(7.0 * v), 0.5 + 0.3 * std::cos(5.0 * v)};
+    }
+    std::ofstream(folder_ / "p.txt") << grid_problem(n, handles, moved);
+    const auto before = snapshot(folder_);
+    const pid_t pid =
+        start({"map", "--rest", (folder_ / "p.txt").string(), "--out", (folder_ / "o.vtu").string(),
+               "--record", (folder_ / "rec").string(), "--mode", "full"});
+    ASSERT_GT(pid, 0);
+    const bool recording = wait_until(pid, [&] {
+        std::error_code error;
+        return fs::exists(folder_ / "rec" / "iteration_0001.vtu", error);
+    });
+    kill(pid, SIGINT);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ASSERT_TRUE(recording) << "the command ended before it recorded a frame";
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) << status;
+    EXPECT_EQ(snapshot(folder_), before);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Memory limits: never a hang; the one line says what ran out.
+
+std::string shell(const std::string& command, int* status) {
+    const fs::path out = fs::temp_directory_path() / ("sa_shell_" + std::to_string(::getpid()));
+    *status = std::system((command + " > " + out.string() + " 2>&1").c_str());
+    std::string text = read_file(out);
+    fs::remove(out);
+    return text;
+}
+
+TEST(MemoryLimit, StartsOrFailsAtOnceNeverHangs) {
+    if (kSanitized) GTEST_SKIP() << "the sanitizer runtime cannot run under ulimit -v";
+    // `sa --version` hung at 100% CPU below about 190 MB (OpenBLAS retried its buffer).
+    for (const int kilobytes : {60000, 100000, 150000, 190000}) {
+        int status = 0;
+        const std::string text = shell("ulimit -v " + std::to_string(kilobytes) + "; timeout 20 " +
+                                           std::string(SA_EXECUTABLE) + " --version",
+                                       &status);
+        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << kilobytes << ": " << text;
+        EXPECT_EQ(text, "sa 0.1.0\n");
+    }
+}
+
+TEST(MemoryLimit, RunningOutIsOneLineAndExitFour) {
+    if (kSanitized) GTEST_SKIP() << "the sanitizer runtime cannot run under ulimit -v";
+    const fs::path folder =
+        fs::temp_directory_path() / ("sa_memory_limit_" + std::to_string(::getpid()));
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    const int n = 120;
+    std::map<int, std::pair<double, double>> moved;
+    for (int v = n + 1; v < n * n - n - 1; v += 7) moved[v] = {0.5, 0.5};
+    std::ofstream(folder / "p.txt") << grid_problem(n, grid_boundary(n), moved);
+    int out_of_memory = 0;
+    for (int megabytes = 160; megabytes <= 400; megabytes += 40) {
+        SCOPED_TRACE(megabytes);
+        int status = 0;
+        const std::string text = shell(
+            "ulimit -v " + std::to_string(megabytes * 1024) + "; timeout 120 " +
+                std::string(SA_EXECUTABLE) + " map --quiet --mode full --rest " +
+                (folder / "p.txt").string() + " --out " + (folder / "o.vtu").string() + " --force",
+            &status);
+        ASSERT_TRUE(WIFEXITED(status)) << text;
+        const int code = WEXITSTATUS(status);
+        EXPECT_NE(code, 124) << "timed out: " << text;  // timeout's status: a hang
+        if (code == 4) {
+            ++out_of_memory;
+            const std::string last = text.substr(text.rfind("sa: error: "));
+            EXPECT_EQ(std::count(last.begin(), last.end(), '\n'), 1) << last;
+            EXPECT_NE(last.find("out of memory while "), std::string::npos) << last;
+            EXPECT_NE(last.find("address-space limit (ulimit -v)"), std::string::npos) << last;
+            EXPECT_FALSE(fs::exists(folder / "o.vtu"));
+        } else {
+            EXPECT_TRUE(code == 0 || code == 1) << text;
+        }
+    }
+    EXPECT_GT(out_of_memory, 0) << "no limit was low enough to run out";
+    fs::remove_all(folder);
+}
+
+}  // namespace
+}  // namespace sa
