@@ -41,10 +41,14 @@ std::vector<Index> branched_vertices(const SimplicialMesh& mesh, const MeshTopol
         for (int k = 0; k < 3; ++k) {
             const Index v = mesh.simplices(s, k);
             const Eigen::Vector2d p = positions.row(v).head<2>().transpose();
+            // Unit edges: the angle does not depend on their lengths, and products of raw
+            // coordinates would overflow or underflow on meshes at 1e+-200.
             const Eigen::Vector2d e1 =
-                positions.row(mesh.simplices(s, (k + 1) % 3)).head<2>().transpose() - p;
+                (positions.row(mesh.simplices(s, (k + 1) % 3)).head<2>().transpose() - p)
+                    .stableNormalized();
             const Eigen::Vector2d e2 =
-                positions.row(mesh.simplices(s, (k + 2) % 3)).head<2>().transpose() - p;
+                (positions.row(mesh.simplices(s, (k + 2) % 3)).head<2>().transpose() - p)
+                    .stableNormalized();
             sum[v] += orientation * std::atan2(e1.x() * e2.y() - e1.y() * e2.x(), e1.dot(e2));
         }
     }
@@ -81,10 +85,11 @@ std::vector<Index> branched_edges(const SimplicialMesh& mesh, const MeshTopology
         for (int k = 0; k < 4; ++k)
             p[k] = positions.row(mesh.simplices(s, k)).head<3>().transpose();
         for (const auto& e : kEdge) {
-            // The dihedral angle at edge ab between the faces abc and abd.
-            const Eigen::Vector3d ab = p[e[1]] - p[e[0]];
-            const Eigen::Vector3d n1 = ab.cross(p[e[2]] - p[e[0]]),
-                                  n2 = ab.cross(p[e[3]] - p[e[0]]);
+            // The dihedral angle at edge ab between the faces abc and abd, from unit edges (the
+            // angle does not depend on their lengths; raw products overflow at 1e+-200).
+            const Eigen::Vector3d ab = (p[e[1]] - p[e[0]]).stableNormalized();
+            const Eigen::Vector3d n1 = ab.cross((p[e[2]] - p[e[0]]).stableNormalized()),
+                                  n2 = ab.cross((p[e[3]] - p[e[0]]).stableNormalized());
             sum[edge_index(mesh.simplices(s, e[0]), mesh.simplices(s, e[1]))] +=
                 std::atan2(n1.cross(n2).norm(), n1.dot(n2));
         }

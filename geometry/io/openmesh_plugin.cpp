@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iostream>
 #include <mutex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -159,6 +160,7 @@ void check_ply_header(const std::string& path) {
     std::string line;
     std::getline(in, line);  // `ply`, checked by check_start
     bool element = false;
+    std::set<std::string> elements;
     for (int number = 2; std::getline(in, line); ++number) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
         std::istringstream words(line);
@@ -172,9 +174,26 @@ void check_ply_header(const std::string& path) {
             long long count = -1;
             if (!(words >> name >> count) || count < 0)
                 fail("expected 'element NAME COUNT' in the PLY header");
+            if (!elements.insert(name).second) fail("a second PLY element '" + name + "'");
             element = true;
         } else if (keyword == "property") {
             if (!element) fail("a PLY property before any element");
+            // `property TYPE NAME` or `property list COUNT_TYPE TYPE NAME`, with PLY's types
+            // (OpenMesh's reader can run for minutes on a header it half understands: found by
+            // fuzzing).
+            static const std::set<std::string> kTypes = {
+                "char", "uchar", "short", "ushort", "int",   "uint",   "float",   "double",
+                "int8", "uint8", "int16", "uint16", "int32", "uint32", "float32", "float64"};
+            std::vector<std::string> rest;
+            for (std::string word; words >> word;) rest.push_back(word);
+            const bool list = !rest.empty() && rest[0] == "list";
+            const bool well_formed =
+                list ? rest.size() == 4 && kTypes.count(rest[1]) != 0 && kTypes.count(rest[2]) != 0
+                     : rest.size() == 2 && kTypes.count(rest[0]) != 0;
+            if (!well_formed)
+                fail(
+                    "expected 'property TYPE NAME' or 'property list TYPE TYPE NAME' with PLY "
+                    "types (char, uchar, ..., float, double)");
         } else if (keyword != "format" && keyword != "comment" && keyword != "obj_info" &&
                    !keyword.empty()) {
             std::string shown;

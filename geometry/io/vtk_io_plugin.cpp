@@ -26,6 +26,7 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "geometry/io/atomic_file.h"
 #include "geometry/io/text_reader.h"
@@ -281,6 +282,80 @@ void check_legacy_header(const std::string& path) {
                          io::quote(first));
 }
 
+/// Whether `token` is a whole decimal integer (an optional sign, then digits only).
+bool is_integer(std::string_view token) {
+    std::size_t i = !token.empty() && (token[0] == '-' || token[0] == '+') ? 1 : 0;
+    if (i == token.size()) return false;
+    for (; i < token.size(); ++i) {
+        if (!std::isdigit(static_cast<unsigned char>(token[i]))) return false;
+    }
+    return true;
+}
+
+/// The cell sections of an ASCII legacy file (VERTICES, LINES, POLYGONS, TRIANGLE_STRIPS, CELLS,
+/// in the classic `n size` layout or 5.x's OFFSETS/CONNECTIVITY, and CELL_TYPES), checked before
+/// VTK reads them: VTK 9.1's reader dereferences a null string when such a section is cut short or
+/// holds a non-number (a crash found by fuzzing). Each section must hold as many integers as it
+/// declares; the scan stops at POINT_DATA or CELL_DATA (names there are free text). Binary legacy
+/// files are left to VTK.
+void check_legacy_cells(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::vector<std::string> tokens;
+    bool ascii = false;
+    std::string line;
+    for (int number = 1; number <= 3 && std::getline(in, line); ++number) {
+        if (number == 3) {
+            std::istringstream words(line);
+            std::string format;
+            words >> format;
+            ascii = format == "ASCII";
+        }
+    }
+    if (!ascii) return;
+    for (std::string token; in >> token;) {
+        if (token == "POINT_DATA" || token == "CELL_DATA") break;
+        tokens.push_back(std::move(token));
+    }
+    const auto fail = [&](const std::string& section, const std::string& what) {
+        throw InputError(path + ": the " + section + " section " + what);
+    };
+    // Requires `count` integers from tokens[i] on; returns the index after them.
+    const auto integers = [&](std::size_t i, long long count, const std::string& section) {
+        if (count < 0 || static_cast<unsigned long long>(count) > tokens.size() - i)
+            fail(section, "is cut short (" + std::to_string(count) + " numbers declared)");
+        for (long long k = 0; k < count; ++k, ++i) {
+            if (!is_integer(tokens[i]))
+                fail(section, "holds " + io::quote(tokens[i].substr(0, 40)) +
+                                  " where a whole number belongs");
+        }
+        return i;
+    };
+    static const std::set<std::string> kCellSections = {"VERTICES", "LINES", "POLYGONS",
+                                                        "TRIANGLE_STRIPS", "CELLS"};
+    for (std::size_t i = 0; i < tokens.size();) {
+        const std::string& section = tokens[i];
+        if (section == "CELL_TYPES") {
+            if (i + 1 >= tokens.size() || !is_integer(tokens[i + 1])) fail(section, "has no count");
+            i = integers(i + 2, std::stoll(tokens[i + 1]), section);
+        } else if (kCellSections.count(section) != 0) {
+            if (i + 2 >= tokens.size() || !is_integer(tokens[i + 1]) || !is_integer(tokens[i + 2]))
+                fail(section, "has no 'COUNT SIZE' after its name");
+            const long long cells = std::stoll(tokens[i + 1]), size = std::stoll(tokens[i + 2]);
+            i += 3;
+            if (i < tokens.size() && tokens[i] == "OFFSETS") {
+                i = integers(i + 2, cells, section + " OFFSETS");
+                if (i >= tokens.size() || tokens[i] != "CONNECTIVITY")
+                    fail(section, "has no CONNECTIVITY after its OFFSETS");
+                i = integers(i + 2, size, section + " CONNECTIVITY");
+            } else {
+                i = integers(i, size, section);
+            }
+        } else {
+            ++i;
+        }
+    }
+}
+
 /// XML files start with '<' (after whitespace).
 void check_xml_start(const std::string& path) {
     const std::string start = file_start(path, 256);
@@ -294,6 +369,7 @@ void check_xml_start(const std::string& path) {
 
 MeshFile read_vtk_file(const std::string& path) {
     check_legacy_header(path);
+    check_legacy_cells(path);
     auto reader = vtkSmartPointer<vtkDataSetReader>::New();
     run_reader(*reader, path, "legacy VTK");
     vtkDataSet* data = reader->GetOutput();
