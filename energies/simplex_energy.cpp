@@ -4,35 +4,11 @@
 #include <sstream>
 #include <type_traits>
 
-#include "energies/polynomial_roots.h"
+#include "energies/orientation_step.h"
 #include "energies/rotation_invariant_projection.h"
 #include "optim/errors.h"
 
 namespace sa {
-
-namespace {
-
-/// Coefficients of det(A + t B) = c0 + c1 t + c2 t^2 (+ c3 t^3).
-template <int D>
-std::array<double, 4> determinant_polynomial(const Mat<D>& A, const Mat<D>& B) {
-    if constexpr (D == 2) {
-        const double c0 = A.determinant(), c2 = B.determinant();
-        return {c0, (A + B).determinant() - c0 - c2, c2, 0.0};
-    } else {
-        // det(A + tB) = det A + t <cof A, B> + t^2 <A, cof B> + t^3 det B.
-        auto cofactor = [](const Mat<3>& M) {
-            Mat<3> C;
-            C.col(0) = M.col(1).cross(M.col(2));
-            C.col(1) = M.col(2).cross(M.col(0));
-            C.col(2) = M.col(0).cross(M.col(1));
-            return C;
-        };
-        return {A.determinant(), cofactor(A).cwiseProduct(B).sum(),
-                A.cwiseProduct(cofactor(B)).sum(), B.determinant()};
-    }
-}
-
-}  // namespace
 
 void SimplexEnergyOptions::validate() const {
     auto fail = [](const std::string& field, double value, const std::string& rule) {
@@ -70,17 +46,6 @@ SimplexEnergy<D>::SimplexEnergy(SimplexEnergyOptions options, std::vector<double
             " references)");
     }
     sigma_sum_ = options_.mapping_distortion && needs_sigma_sum(*options_.mapping_distortion);
-}
-
-template <int D>
-SimplexEnergy<D> SimplexEnergy<D>::subset(const std::vector<Index>& selected) const {
-    std::vector<double> weights;
-    std::vector<Mat<D>> references;
-    for (Index s : selected) {
-        weights.push_back(weights_[s]);
-        if (!references_.empty()) references.push_back(references_[s]);
-    }
-    return SimplexEnergy(options_, std::move(weights), std::move(references));
 }
 
 template <int D>

@@ -53,10 +53,6 @@ class SimplexEnergy {
     bool project_hessian(Index i, const Vec<arity>& a, Mat<arity>& hessian, ProjectionMode mode,
                          double epsilon) const;
 
-    /// The same energy on the simplices `selected` only: element k of the result is simplex
-    /// selected[k] of this one.
-    SimplexEnergy subset(const std::vector<Index>& selected) const;
-
     /// The barrier distortion of A (+inf when det A <= 0).
     double barrier_distortion(const Mat<D>& A) const;
     const SimplexEnergyOptions& options() const { return options_; }

@@ -4,9 +4,10 @@
 //     A_i = [x_1 - x_0 | ... | x_D - x_0] R_i^-1,      R_i = the rest edge matrix,
 // and assembly asks the copies of each vertex to coincide.
 //
-//   VertexSimplexEnergy          the per-simplex energy of SimplexEnergy (or another element
-//                                energy of vec(A_i), AEnergy), composed with the linear map
-//                                copies -> vec(A_i)
+//   VertexSimplexEnergy          a per-simplex energy of A (SimplexEnergy by default, or any
+//                                element energy of arity D*D: a user's, a re-indexed one),
+//                                composed with the linear map copies -> vec(A_i). The same adapter
+//                                serves v-SA's copies and the vertex stage's positions (A = X E^-1)
 //   VertexCopyAgreementEnergy    |x_a - x_b|^2 between two copies of one vertex (quadratic)
 //   VertexCopyTargetEnergy       |x - v*|^2 for a copy of a handle (quadratic)
 
@@ -17,14 +18,19 @@
 
 namespace sa {
 
-template <int D, class AEnergy = SimplexEnergy<D>>
+template <int D, ElementEnergy E = SimplexEnergy<D>>
 class VertexSimplexEnergy {
   public:
+    static_assert(E::arity == D * D, "VertexSimplexEnergy wraps an energy of vec(A)");
     static constexpr int arity = D * (D + 1);
     static constexpr int kA = D * D;
+    // A linear change of variables keeps a constant Hessian constant and a convex energy convex.
+    static constexpr bool is_quadratic = is_quadratic_energy<E>();
+    static constexpr bool is_convex = is_convex_energy<E>();
 
-    /// `rest_edge_inverses[i]` = R_i^-1 for each simplex.
-    VertexSimplexEnergy(AEnergy energy, std::vector<Mat<D>> rest_edge_inverses)
+    /// `rest_edge_inverses[i]` = R_i^-1 for each element i; element i of `energy` is evaluated at
+    /// A_i.
+    VertexSimplexEnergy(E energy, std::vector<Mat<D>> rest_edge_inverses)
         : energy_(std::move(energy)), rest_inverse_(std::move(rest_edge_inverses)) {}
 
     double value(Index i, const Vec<arity>& x) const { return energy_.value(i, map(i) * x); }
@@ -43,7 +49,8 @@ class VertexSimplexEnergy {
     /// eigenvalue projection of the D(D+1) x D(D+1) block: L's null space (translations of the
     /// simplex) keeps eigenvalue 0 instead of epsilon, and the rest is clamped in A's metric.
     /// One 9 x 9 (4 x 4) projection through the singular vectors of A instead of a 12 x 12
-    /// (6 x 6) eigen-decomposition.
+    /// (6 x 6) eigen-decomposition. An energy without a projection of its own gets the
+    /// eigenvalue projection of its D^2 x D^2 block (project_hessian_block()).
     bool project_hessian(Index i, const Vec<arity>& x, Mat<arity>& h, ProjectionMode mode,
                          double epsilon) const {
         const Eigen::Matrix<double, kA, arity> L = map(i);
@@ -51,12 +58,18 @@ class VertexSimplexEnergy {
         Vec<kA> ga;
         Mat<kA> ha;
         energy_.value_gradient_hessian(i, a, ga, ha);
-        if (!energy_.project_hessian(i, a, ha, mode, epsilon)) return false;
+        bool changed;
+        if constexpr (HasOwnProjection<E>) {
+            changed = energy_.project_hessian(i, a, ha, mode, epsilon);
+        } else {
+            changed = project_hessian_block<kA>(ha, mode, epsilon);
+        }
+        if (!changed) return false;
         h = L.transpose() * ha * L;
         return true;
     }
     double max_step(Index i, const Vec<arity>& x,
-                    const Vec<arity>& dx) const requires HasMaxStep<AEnergy> {
+                    const Vec<arity>& dx) const requires HasMaxStep<E> {
         const Eigen::Matrix<double, kA, arity> L = map(i);
         return energy_.max_step(i, L * x, L * dx);
     }
@@ -74,8 +87,10 @@ class VertexSimplexEnergy {
         return L;
     }
 
+    const E& inner() const { return energy_; }
+
   private:
-    AEnergy energy_;
+    E energy_;
     std::vector<Mat<D>> rest_inverse_;
 };
 

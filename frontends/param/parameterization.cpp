@@ -86,41 +86,17 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
     // bound move the whole mesh unless the caller forces the submesh mode.
     if (options.optimal_bound_rounds > 0 && solver.mode == SolveMode::kAuto)
         solver.mode = SolveMode::kFull;
-    const int rounds = std::max(1, options.optimal_bound_rounds);
-    bool have_result = false;
-    for (int round = 0; round < rounds; ++round) {
-        if (round > 0 && budget.exhausted()) break;  // keep the last verified round
-        Stopwatch round_watch;
-        if (round > 0) {
-            // The previous result starts the next round, its largest distortion is the new bound.
-            const double previous = result.reached_bound;
-            solver.bound = previous;
-            problem.initial = result.uv;
-            log_line(observer.logger, "optimal bound: round " + std::to_string(round) +
-                                          ", K = " + std::to_string(previous));
-        }
-        SimplexAssemblyResult r =
-            run_simplex_assembly(problem, with_time_left(solver, budget), observer);
-        if (round == 0) result.initial_quality = r.initial_quality;
-        BoundRound record;
-        record.bound = solver.bound;
-        record.max_distortion = r.verification.max_distortion;
-        record.success = r.success && r.verification.within_bound();
-        record.iterations = r.newton.num_steps() + r.vertex_stage.num_steps();
-        record.time = round_watch.seconds();
-        result.rounds.push_back(record);
-        if (!record.success) {
-            if (!have_result) result.solve = std::move(r);
-            break;  // keep the last verified round
-        }
-        const bool improved =
-            !have_result || r.verification.max_distortion <
-                                result.reached_bound * (1.0 - options.optimal_bound_tolerance);
-        result.uv = r.positions;
-        result.reached_bound = r.verification.max_distortion;
-        result.solve = std::move(r);
-        have_result = true;
-        if (!improved) break;
+    OptimalBoundOptions rounds;
+    rounds.rounds = std::max(1, options.optimal_bound_rounds);
+    rounds.tolerance = options.optimal_bound_tolerance;
+    OptimalBound solved = optimal_bound(problem, with_time_left(solver, budget), rounds, observer);
+    result.initial_quality = solved.initial_quality;
+    result.rounds = std::move(solved.rounds);
+    const bool have_result = solved.verified;
+    result.solve = std::move(solved.solve);
+    if (have_result) {
+        result.uv = result.solve.positions;
+        result.reached_bound = result.solve.verification.max_distortion;
     }
     result.success = have_result;
     if (!have_result) result.uv = result.solve.positions;

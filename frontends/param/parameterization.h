@@ -4,13 +4,15 @@
 // (no handles) and E_m = sum_i area_i |A_i - A_i^0|^2 (difference to the initial map) or the LSCM
 // energy, under a bound K on the conformal or isometric distortion, or the optimal bound: rounds
 // that each take the largest distortion of the previous result as the new bound, until it stops
-// improving (section 5.1, "Optimal bound"). With `free_boundary_injective` the boundary-angle
-// barrier E_theta keeps every boundary angle sum below 2 pi.
+// improving (section 5.1, "Optimal bound"; the mesh driver's loop, optimal_bound.h). With
+// `free_boundary_injective` the boundary-angle barrier E_theta keeps every boundary angle sum below
+// 2 pi.
 
 #include <string>
 #include <vector>
 
 #include "frontends/param/start_fallback.h"
+#include "frontends/simplex_assembly/optimal_bound.h"
 #include "frontends/simplex_assembly/simplex_assembly.h"
 
 namespace sa {
@@ -34,14 +36,6 @@ struct ParameterizationOptions {
     /// When the first round's result does not verify (or is over the bound), start again from a
     /// map that cannot fold (start_fallback.h) and keep the better verified result.
     bool fallback = true;
-};
-
-struct BoundRound {
-    double bound = kInfinity;     ///< K for this round
-    double max_distortion = 0.0;  ///< of its result
-    bool success = false;
-    int iterations = 0;
-    double time = 0.0;
 };
 
 struct ParameterizationResult {

@@ -6,9 +6,12 @@
 // (Eq. 10 with Eq. 11 as the assembly term: R_e = Rot(k_e quarter turns), e_f and e_g the edge's
 // unit vectors in each face's frame; E_m = |phi' - phi|^2, the paper's choice; E_C the conformal
 // barrier e^{d_conf} with K = +inf, which keeps every det A_f > 0, so the Poisson map of the
-// result has no foldovers; w_f = area_f / mean area). lambda follows the schedule of 4.4, and the
-// solve ends when sum_e curl_e^2 < assembly_tolerance and E changes by less than
-// energy_tolerance (relative) in a step. The matchings stay fixed, so the singularities do too.
+// result has no foldovers; w_f = area_f / mean area). It is the Simplex Assembly engine
+// (frontends/simplex_assembly/engine.h) in its linear-part layout without translations: A_f per
+// face in the face's rest frame, the frame energy as its per-simplex energy, Eq. 11 as its
+// assembly term; the engine's schedule (4.4) and termination end it (sum_e curl_e^2 <
+// assembly_tolerance and E changing by less than energy_tolerance, relative, in a step; or E
+// converged at lambda_max; or the limits). The matchings stay fixed, so the singularities do too.
 // A field that is integrable already (sum curl^2 below the tolerance) is returned unchanged
 // without an iteration: E_C would otherwise pull an integrable but anisotropic field towards
 // conformal frames.
@@ -19,6 +22,7 @@
 
 #include <vector>
 
+#include "frontends/simplex_assembly/engine_options.h"
 #include "geometry/mesh_topology.h"
 #include "geometry/rest_frames.h"
 #include "optim/logger.h"
@@ -26,15 +30,11 @@
 
 namespace sa {
 
-struct IntegrableFieldOptions {
+/// The engine's schedule and termination (engine_options.h: lambda_min 1e3, lambda_max 1e16,
+/// assembly_tolerance 1e-12 on sum_e curl_e^2 of the field scaled to mean row norm 1,
+/// energy_tolerance 1e-8, 200 iterations, ...) and the weight of E_m.
+struct IntegrableFieldOptions : AssemblyEngineOptions {
     double mu = 1000.0;  ///< the weight of E_m
-    double lambda_min = 1e3;
-    double lambda_max = 1e16;
-    double assembly_tolerance = 1e-12;  ///< on sum_e curl_e^2, field scaled to mean row norm 1
-    double energy_tolerance = 1e-8;
-    int max_iterations = 200;
-    double max_time_seconds = kInfinity;
-    int num_threads = 0;  ///< 0 = all cores
 };
 
 struct IntegrableField {
@@ -42,6 +42,7 @@ struct IntegrableField {
     double assembly = 0.0;         ///< sum_e curl_e^2 at the end (scaled field)
     bool assembled = false;        ///< assembly < assembly_tolerance
     NewtonSummary newton;
+    AssemblyStop stop = AssemblyStop::kAssembled;  ///< why the engine stopped
 };
 
 /// Progress rows go to `logger` (iteration, energy, E~, lambda, step, time).

@@ -6,7 +6,6 @@
 #include "energies/affine_point_energies.h"
 #include "energies/boundary_angle_energy.h"
 #include "energies/edge_assembly_energy.h"
-#include "energies/simplex_energy.h"
 #include "energies/vertex_copy_energies.h"
 #include "geometry/tagged_simplices.h"
 
@@ -22,13 +21,6 @@ int local_index(const SimplicialMesh& mesh, Index s, Index v) {
     return -1;
 }
 
-template <int N>
-std::array<Index, N> consecutive(Index first) {
-    std::array<Index, N> a;
-    for (int k = 0; k < N; ++k) a[k] = first + k;
-    return a;
-}
-
 template <int N, int M>
 std::array<Index, N + M> concat(const std::array<Index, N>& a, const std::array<Index, M>& b) {
     std::array<Index, N + M> c;
@@ -42,49 +34,45 @@ std::array<Index, N + M> concat(const std::array<Index, N>& a, const std::array<
 template <int D>
 AssemblyProblem<D>::AssemblyProblem(const AssemblyInput<D>& in,
                                     const SimplexAssemblyOptions& options)
-    : variant_(options.variant), mesh_(in.mesh), frames_(in.frames) {
-    const Index n = in.mesh->num_simplices();
-    const SimplexEnergy<D> simplex_energy(simplex_energy_options(options), in.frames->volume,
-                                          options.mapping_distortion == DistortionType::kDifference
-                                              ? in.reference_linear
-                                              : std::vector<Mat<D>>{});
-    translation_offset_.assign(n, -1);
+    : variant_(options.variant) {
     if (variant_ == Variant::kVertex) {
         if (!in.fans.empty()) {
             throw InvalidArgumentError("the boundary-angle barrier needs the r-SA or f-SA variant");
         }
         build_vertex(in);
-        std::vector<Mat<D>> rest_inverse = in.frames->edge_inverse;
-        std::vector<std::array<Index, D*(D + 1)>> elements(n);
-        for (Index s = 0; s < n; ++s) elements[s] = consecutive<D*(D + 1)>(Index(D * (D + 1)) * s);
-        simplex_term_ = problem_->add_term(
-            "simplex energy", VertexSimplexEnergy<D>(simplex_energy, std::move(rest_inverse)),
-            std::move(elements));
-        problem_->add_variable_block("vertex copies", 0, problem_->num_variables());
-        return;
-    }
-    if (variant_ == Variant::kReduced) {
+    } else if (variant_ == Variant::kReduced) {
         build_reduced(in);
     } else {
         build_full(in);
     }
-    std::vector<std::array<Index, D * D>> elements(n);
-    for (Index s = 0; s < n; ++s) elements[s] = consecutive<D * D>(a_offset(s));
-    simplex_term_ = problem_->add_term("simplex energy", simplex_energy, std::move(elements));
+    add_energies_and_constraints(in);
+    for (Index s : in.anchored_simplices) engine_->fix_simplex(s);
+}
+
+template <int D>
+void AssemblyProblem<D>::add_energies_and_constraints(const AssemblyInput<D>& in) {
+    for (const auto& energy : in.energies) energy->add_to(*engine_);
     if constexpr (D == 2) {
         add_boundary_angle_terms(in);
     }
-    problem_->add_variable_block("linear parts", 0, a_offset(n));
-    if (!translation_simplices_.empty()) {
-        const BlockId b =
-            problem_->add_variable_block("translations", a_offset(n), problem_->num_variables());
-        if (variant_ == Variant::kReduced) shifted_block_ = b;
-    }
-    for (Index s : in.anchored_simplices) {
-        for (int k = 0; k < D * D; ++k) problem_->set_fixed(a_offset(s) + k);
-        if (translation_offset_[s] >= 0) {
-            for (int k = 0; k < D; ++k) problem_->set_fixed(translation_offset_[s] + k);
+    if (!in.constraints.empty()) {
+        const SimplicialMesh& mesh = *in.mesh;
+        const RestFrames<D>& frames = *in.frames;
+        std::vector<LinearPartConstraint<D, 1>> rows;
+        rows.reserve(in.constraints.size());
+        for (const EdgeRow<D>& c : in.constraints) {
+            const Index s = c.simplex;
+            const Vec<D> e = frames.corner(s, local_index(mesh, s, c.b)) -
+                             frames.corner(s, local_index(mesh, s, c.a));
+            // n^T A e = sum_ij n_i A_ij e_j; vec(A) is column-major: A_ij at i + D j.
+            LinearPartConstraint<D, 1> row;
+            row.simplex = s;
+            for (int j = 0; j < D; ++j)
+                row.rows.coefficients.template block<1, D>(0, D * j) = e[j] * c.normal.transpose();
+            row.rows.rhs[0] = c.value;
+            rows.push_back(row);
         }
+        engine_->template add_linear_part_constraints<1>("edge constraints", rows);
     }
 }
 
@@ -113,15 +101,15 @@ void AssemblyProblem<D>::add_boundary_angle_terms(const AssemblyInput<D>& in) {
                         std::array<Index, 4 * K> element;
                         for (int t = 0; t < K; ++t) {
                             edges[t] = fan_edges(*in.mesh, *in.frames, fan, t);
-                            for (int c = 0; c < 4; ++c)
-                                element[4 * t + c] = a_offset(fan.triangles[t]) + c;
+                            const auto a = engine_->linear_variables(fan.triangles[t]);
+                            std::copy(a.begin(), a.end(), element.begin() + 4 * t);
                         }
                         energy.edges.push_back(edges);
                         elements.push_back(element);
                     }
                     if (!elements.empty()) {
-                        problem_->add_term("boundary angle " + std::to_string(K), std::move(energy),
-                                           std::move(elements));
+                        engine_->add_barrier("boundary angle " + std::to_string(K),
+                                             std::move(energy), std::move(elements));
                     }
                 }(),
                 ...);
@@ -135,7 +123,6 @@ void AssemblyProblem<D>::build_reduced(const AssemblyInput<D>& in) {
     const SimplicialMesh& mesh = *in.mesh;
     const MeshTopology& topology = *in.topology;
     const RestFrames<D>& frames = *in.frames;
-    const Index n = mesh.num_simplices();
 
     // Omega_s: a simplex per tree edge, plus one per handle no tagged simplex contains.
     tree_ = approximate_steiner_tree(mesh.num_vertices(), topology.edges, in.handles);
@@ -146,18 +133,11 @@ void AssemblyProblem<D>::build_reduced(const AssemblyInput<D>& in) {
         for (Index s : tagged) covered |= local_index(mesh, s, h) >= 0;
         if (!covered) tagged.insert(topology.simplices_of_vertex[topology.vertex_begin[h]]);
     }
-    translation_simplices_.assign(tagged.begin(), tagged.end());
-
-    Eigen::VectorXd x(a_offset(n) + Index(D) * translation_simplices_.size());
-    for (Index s = 0; s < n; ++s)
-        x.template segment<D * D>(a_offset(s)) =
-            Eigen::Map<const Vec<D * D>>(in.start_linear[s].data());
-    for (std::size_t k = 0; k < translation_simplices_.size(); ++k) {
-        const Index s = translation_simplices_[k];
-        translation_offset_[s] = a_offset(n) + Index(D) * Index(k);
-        x.template segment<D>(translation_offset_[s]) = in.start_translation[s];
-    }
-    problem_ = std::make_unique<Problem>(std::move(x));
+    std::vector<std::pair<Index, Vec<D>>> translations;
+    for (Index s : tagged) translations.emplace_back(s, in.start_translation[s]);
+    num_translation_simplices_ = static_cast<Index>(translations.size());
+    engine_ = std::make_unique<SimplexAssemblyEngine<D>>(in.start_linear, translations);
+    SimplexAssemblyEngine<D>& engine = *engine_;
     for (Index s : in.anchored_simplices)
         anchor_translations_.emplace_back(s, in.start_translation[s]);
 
@@ -178,31 +158,26 @@ void AssemblyProblem<D>::build_reduced(const AssemblyInput<D>& in) {
         }
         facets.push_back(edges);
         facet_elements.push_back(
-            concat<D * D, D * D>(consecutive<D * D>(a_offset(i)), consecutive<D * D>(a_offset(j))));
+            concat<D * D, D * D>(engine.linear_variables(i), engine.linear_variables(j)));
     }
-    assembly_terms_.push_back(problem_->add_term(
-        "edge assembly", EdgeAssemblyEnergy<D>(std::move(facets)), std::move(facet_elements)));
+    engine.add_assembly_term("edge assembly", EdgeAssemblyEnergy<D>(std::move(facets)),
+                             std::move(facet_elements));
 
-    auto affine_block = [&](Index s) {
-        return concat<D * D, D>(consecutive<D * D>(a_offset(s)),
-                                consecutive<D>(translation_offset_[s]));
-    };
     // Handle assembly (Eq. 8).
     std::vector<typename AffinePointTargetEnergy<D>::Target> targets;
     std::vector<std::array<Index, D * D + D>> target_elements;
     for (std::size_t k = 0; k < in.handles.size(); ++k) {
         const Index h = in.handles[k];
-        for (Index s : translation_simplices_) {
+        for (Index s : tagged) {
             const int local = local_index(mesh, s, h);
             if (local < 0) continue;
             targets.push_back({frames.corner(s, local), in.targets[k]});
-            target_elements.push_back(affine_block(s));
+            target_elements.push_back(engine.affine_variables(s));
         }
     }
     if (!targets.empty()) {
-        assembly_terms_.push_back(problem_->add_term("handle assembly",
-                                                     AffinePointTargetEnergy<D>(std::move(targets)),
-                                                     std::move(target_elements)));
+        engine.add_assembly_term("handle assembly", AffinePointTargetEnergy<D>(std::move(targets)),
+                                 std::move(target_elements));
     }
     // Vertex assembly (Eq. 9): the tagged simplices of the tree edges at each tree vertex agree
     // on it (a chain of pairs joins them all).
@@ -220,14 +195,14 @@ void AssemblyProblem<D>::build_reduced(const AssemblyInput<D>& in) {
             const Index p = list[k], q = list[k + 1];
             points.push_back({frames.corner(p, local_index(mesh, p, v)),
                               frames.corner(q, local_index(mesh, q, v))});
-            point_elements.push_back(
-                concat<D * D + D, D * D + D>(affine_block(p), affine_block(q)));
+            point_elements.push_back(concat<D * D + D, D * D + D>(engine.affine_variables(p),
+                                                                  engine.affine_variables(q)));
         }
     }
     if (!points.empty()) {
-        assembly_terms_.push_back(
-            problem_->add_term("vertex assembly", AffinePointAgreementEnergy<D>(std::move(points)),
-                               std::move(point_elements)));
+        engine.add_assembly_term("vertex assembly",
+                                 AffinePointAgreementEnergy<D>(std::move(points)),
+                                 std::move(point_elements));
     }
 }
 
@@ -236,19 +211,11 @@ void AssemblyProblem<D>::build_full(const AssemblyInput<D>& in) {
     const SimplicialMesh& mesh = *in.mesh;
     const RestFrames<D>& frames = *in.frames;
     const Index n = mesh.num_simplices();
-    Eigen::VectorXd x(a_offset(n) + Index(D) * n);
-    for (Index s = 0; s < n; ++s) {
-        x.template segment<D * D>(a_offset(s)) =
-            Eigen::Map<const Vec<D * D>>(in.start_linear[s].data());
-        translation_offset_[s] = a_offset(n) + Index(D) * s;
-        x.template segment<D>(translation_offset_[s]) = in.start_translation[s];
-        translation_simplices_.push_back(s);
-    }
-    problem_ = std::make_unique<Problem>(std::move(x));
-    auto affine_block = [&](Index s) {
-        return concat<D * D, D>(consecutive<D * D>(a_offset(s)),
-                                consecutive<D>(translation_offset_[s]));
-    };
+    std::vector<std::pair<Index, Vec<D>>> translations;
+    for (Index s = 0; s < n; ++s) translations.emplace_back(s, in.start_translation[s]);
+    num_translation_simplices_ = n;
+    engine_ = std::make_unique<SimplexAssemblyEngine<D>>(in.start_linear, translations);
+    SimplexAssemblyEngine<D>& engine = *engine_;
     // Eq. 2: both simplices of a facet agree on each of its vertices.
     std::vector<typename AffinePointAgreementEnergy<D>::Point> points;
     std::vector<std::array<Index, 2 * (D * D + D)>> point_elements;
@@ -258,13 +225,13 @@ void AssemblyProblem<D>::build_full(const AssemblyInput<D>& in) {
             const Index v = f.vertices[k];
             points.push_back({frames.corner(i, local_index(mesh, i, v)),
                               frames.corner(j, local_index(mesh, j, v))});
-            point_elements.push_back(
-                concat<D * D + D, D * D + D>(affine_block(i), affine_block(j)));
+            point_elements.push_back(concat<D * D + D, D * D + D>(engine.affine_variables(i),
+                                                                  engine.affine_variables(j)));
         }
     }
-    assembly_terms_.push_back(problem_->add_term("facet vertex assembly",
-                                                 AffinePointAgreementEnergy<D>(std::move(points)),
-                                                 std::move(point_elements)));
+    engine.add_assembly_term("facet vertex assembly",
+                             AffinePointAgreementEnergy<D>(std::move(points)),
+                             std::move(point_elements));
     // Eq. 3: every simplex containing a handle maps it to its target.
     std::vector<typename AffinePointTargetEnergy<D>::Target> targets;
     std::vector<std::array<Index, D * D + D>> target_elements;
@@ -274,13 +241,12 @@ void AssemblyProblem<D>::build_full(const AssemblyInput<D>& in) {
         for (Index i = topology.vertex_begin[h]; i < topology.vertex_begin[h + 1]; ++i) {
             const Index s = topology.simplices_of_vertex[i];
             targets.push_back({frames.corner(s, local_index(mesh, s, h)), in.targets[k]});
-            target_elements.push_back(affine_block(s));
+            target_elements.push_back(engine.affine_variables(s));
         }
     }
     if (!targets.empty()) {
-        assembly_terms_.push_back(problem_->add_term("handle assembly",
-                                                     AffinePointTargetEnergy<D>(std::move(targets)),
-                                                     std::move(target_elements)));
+        engine.add_assembly_term("handle assembly", AffinePointTargetEnergy<D>(std::move(targets)),
+                                 std::move(target_elements));
     }
 }
 
@@ -289,17 +255,20 @@ void AssemblyProblem<D>::build_vertex(const AssemblyInput<D>& in) {
     const SimplicialMesh& mesh = *in.mesh;
     const RestFrames<D>& frames = *in.frames;
     const Index n = mesh.num_simplices();
-    constexpr int kCopies = D * (D + 1);
-    Eigen::VectorXd x(Index(kCopies) * n);
+    std::vector<Eigen::Matrix<double, D, D + 1>> corners(n);
     for (Index s = 0; s < n; ++s) {
-        for (int k = 0; k <= D; ++k) {
-            x.template segment<D>(kCopies * s + D * k) =
-                in.start_linear[s] * frames.corner(s, k) + in.start_translation[s];
-        }
+        for (int k = 0; k <= D; ++k)
+            corners[s].col(k) = in.start_linear[s] * frames.corner(s, k) + in.start_translation[s];
     }
-    problem_ = std::make_unique<Problem>(std::move(x));
+    num_translation_simplices_ = 0;  // no translation variables: copies
+    engine_ = std::make_unique<SimplexAssemblyEngine<D>>(
+        SimplexAssemblyEngine<D>::corner_copies(corners, frames.corners, frames.edge_inverse));
+    SimplexAssemblyEngine<D>& engine = *engine_;
     auto copy = [&](Index s, Index v) {
-        return consecutive<D>(Index(kCopies) * s + D * local_index(mesh, s, v));
+        const auto all = engine.affine_variables(s);
+        std::array<Index, D> c;
+        std::copy_n(all.begin() + D * local_index(mesh, s, v), D, c.begin());
+        return c;
     };
     std::vector<std::array<Index, 2 * D>> pairs;
     for (const InteriorFacet& f : in.topology->interior_facets) {
@@ -307,8 +276,7 @@ void AssemblyProblem<D>::build_vertex(const AssemblyInput<D>& in) {
             pairs.push_back(
                 concat<D, D>(copy(f.simplex[0], f.vertices[k]), copy(f.simplex[1], f.vertices[k])));
     }
-    assembly_terms_.push_back(
-        problem_->add_term("copy assembly", VertexCopyAgreementEnergy<D>{}, std::move(pairs)));
+    engine.add_assembly_term("copy assembly", VertexCopyAgreementEnergy<D>{}, std::move(pairs));
     VertexCopyTargetEnergy<D> target_energy;
     std::vector<std::array<Index, D>> target_elements;
     const MeshTopology& topology = *in.topology;
@@ -320,46 +288,17 @@ void AssemblyProblem<D>::build_vertex(const AssemblyInput<D>& in) {
         }
     }
     if (!target_elements.empty()) {
-        assembly_terms_.push_back(problem_->add_term("handle assembly", std::move(target_energy),
-                                                     std::move(target_elements)));
+        engine.add_assembly_term("handle assembly", std::move(target_energy),
+                                 std::move(target_elements));
     }
-    for (Index s : in.anchored_simplices) {
-        for (int k = 0; k < kCopies; ++k) problem_->set_fixed(kCopies * s + k);
-    }
-}
-
-template <int D>
-Mat<D> AssemblyProblem<D>::linear_part(const Eigen::VectorXd& x, Index s) const {
-    if (variant_ == Variant::kVertex) {
-        Eigen::Matrix<double, D, D + 1> copies;
-        for (int k = 0; k <= D; ++k) copies.col(k) = x.template segment<D>(D * (D + 1) * s + D * k);
-        return sa::linear_part<D>(*frames_, s, copies);
-    }
-    return Eigen::Map<const Mat<D>>(x.data() + a_offset(s));
-}
-
-template <int D>
-std::vector<Mat<D>> AssemblyProblem<D>::linear_parts(const Eigen::VectorXd& x) const {
-    std::vector<Mat<D>> A(mesh_->num_simplices());
-    for (Index s = 0; s < mesh_->num_simplices(); ++s) A[s] = linear_part(x, s);
-    return A;
 }
 
 template <int D>
 std::vector<std::pair<Index, Vec<D>>> AssemblyProblem<D>::known_translations(
     const Eigen::VectorXd& x) const {
-    std::vector<std::pair<Index, Vec<D>>> known;
-    if (variant_ == Variant::kVertex) {
-        for (Index s = 0; s < mesh_->num_simplices(); ++s) {
-            Vec<D> centroid = Vec<D>::Zero();  // the frame's origin is the rest centroid
-            for (int k = 0; k <= D; ++k) centroid += x.template segment<D>(D * (D + 1) * s + D * k);
-            known.emplace_back(s, centroid / double(D + 1));
-        }
-        return known;
-    }
-    for (Index s : translation_simplices_)
-        known.emplace_back(s, x.template segment<D>(translation_offset_[s]));
-    known.insert(known.end(), anchor_translations_.begin(), anchor_translations_.end());
+    std::vector<std::pair<Index, Vec<D>>> known = engine_->known_translations(x);
+    if (variant_ == Variant::kReduced)
+        known.insert(known.end(), anchor_translations_.begin(), anchor_translations_.end());
     return known;
 }
 

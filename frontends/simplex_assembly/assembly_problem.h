@@ -1,32 +1,48 @@
 #pragma once
-// Turns a disassembled mesh into the optimization problem of Eq. 10 for one of the three variants
-// (section 5.1), and reads linear parts and translations back from its variables.
+// The mapping problem's configuration of the engine (engine.h) for one of the three variants of
+// section 5.1: its variables, its assembly terms, its per-simplex energies, and reading linear
+// parts and translations back.
 //
 //   r-SA  variables: vec(A_i) for every simplex, then T_p for the tagged simplices Omega_s of
-//         the Steiner tree through the handles (section 4.3). Terms: the simplex energy
-//         mu w_i d_m(A_i) + E_C(A_i); edge assembly (Eq. 7) per shared facet; handle assembly
-//         (Eq. 8) per handle and tagged simplex containing it; vertex assembly (Eq. 9) between
-//         the tagged simplices of tree edges meeting at a tree vertex (a chain of pairs).
+//         the Steiner tree through the handles (section 4.3). Terms: edge assembly (Eq. 7) per
+//         shared facet; handle assembly (Eq. 8) per handle and tagged simplex containing it;
+//         vertex assembly (Eq. 9) between the tagged simplices of tree edges meeting at a tree
+//         vertex (a chain of pairs).
 //   f-SA  vec(A_i) and T_i for every simplex; Eq. 2 per shared facet vertex, Eq. 3 per handle and
 //         simplex containing it.
-//   v-SA  D + 1 vertex copies per simplex; copies of a shared vertex must agree, copies of a
-//         handle reach its target.
-// The assembly terms share the weight lambda (set by the driver at every iteration). Anchored
-// simplices (one per connected part without handles) keep their linear part, translation and
-// copies fixed, which removes the global motion such a part would otherwise have.
+//   v-SA  D + 1 vertex copies per simplex (the engine's corner layout); copies of a shared vertex
+//         must agree, copies of a handle reach its target.
+// Then, in every variant, the per-simplex energies (the options' mu E_m + E_C, then the
+// problem's own), the boundary-angle barrier E_theta when asked (r-SA and f-SA), and the user's
+// linear constraints on linear parts. Anchored simplices (one per connected part without
+// handles) keep their linear part, translation and copies fixed, which removes the global motion
+// such a part would otherwise have.
 
 #include <memory>
 #include <utility>
 #include <vector>
 
+#include "frontends/simplex_assembly/engine.h"
 #include "frontends/simplex_assembly/simplex_assembly_options.h"
+#include "frontends/simplex_assembly/simplex_term.h"
 #include "geometry/boundary_fans.h"
 #include "geometry/mesh_topology.h"
 #include "geometry/rest_frames.h"
 #include "geometry/steiner_tree.h"
-#include "optim/problem.h"
 
 namespace sa {
+
+/// An EdgeConstraint in the driver's normalized coordinates, divided by the rest length of the
+/// edge so that its residual is that of a unit edge, as in Eq. 7:
+///     normal . (x_b - x_a) = value,
+/// on the simplex `simplex` containing the edge in the assembly (n^T A_s (u_b - u_a) = value).
+template <int D>
+struct EdgeRow {
+    Index a = -1, b = -1;
+    Index simplex = -1;
+    Vec<D> normal = Vec<D>::Zero();
+    double value = 0.0;
+};
 
 /// What the builder needs, in the driver's normalized coordinates.
 template <int D>
@@ -42,6 +58,10 @@ struct AssemblyInput {
     std::vector<Index> anchored_simplices;  ///< fixed simplices
     /// Boundary fans for E_theta (section 5.1); empty: no such term. Triangles only.
     std::vector<BoundaryFan> fans;
+    /// The per-simplex energies of A: the options' mu E_m + E_C first, then the problem's own.
+    std::vector<std::shared_ptr<const SimplexTerm<D>>> energies;
+    /// The problem's linear constraints.
+    std::vector<EdgeRow<D>> constraints;
 };
 
 template <int D>
@@ -49,41 +69,32 @@ class AssemblyProblem {
   public:
     AssemblyProblem(const AssemblyInput<D>& input, const SimplexAssemblyOptions& options);
 
-    Problem& problem() { return *problem_; }
-    const Problem& problem() const { return *problem_; }
-    TermId simplex_term() const { return simplex_term_; }
-    const std::vector<TermId>& assembly_terms() const { return assembly_terms_; }
-    /// The block of r-SA's translations (carries the 1e-6 lambda shift); -1 for f-SA and v-SA.
-    BlockId shifted_translation_block() const { return shifted_block_; }
+    SimplexAssemblyEngine<D>& engine() { return *engine_; }
+    const SimplexAssemblyEngine<D>& engine() const { return *engine_; }
+    const Problem& problem() const { return engine_->problem(); }
 
-    Mat<D> linear_part(const Eigen::VectorXd& x, Index s) const;
-    std::vector<Mat<D>> linear_parts(const Eigen::VectorXd& x) const;
+    std::vector<Mat<D>> linear_parts(const Eigen::VectorXd& x) const {
+        return engine_->linear_parts(x);
+    }
     /// The translations the variables determine at x: r-SA the tagged simplices and the anchors,
     /// f-SA and v-SA every simplex.
     std::vector<std::pair<Index, Vec<D>>> known_translations(const Eigen::VectorXd& x) const;
 
     Index num_tree_edges() const { return static_cast<Index>(tree_.size()); }
-    Index num_translation_simplices() const {
-        return static_cast<Index>(translation_simplices_.size());
-    }
+    Index num_translation_simplices() const { return num_translation_simplices_; }
 
   private:
     void build_reduced(const AssemblyInput<D>& in);
     void build_full(const AssemblyInput<D>& in);
     void build_vertex(const AssemblyInput<D>& in);
     void add_boundary_angle_terms(const AssemblyInput<D>& in);
-    Index a_offset(Index s) const { return Index(D * D) * s; }
+    /// The per-simplex energies, E_theta and the linear constraints, in that order.
+    void add_energies_and_constraints(const AssemblyInput<D>& in);
 
     Variant variant_;
-    const SimplicialMesh* mesh_;
-    const RestFrames<D>* frames_;
-    std::unique_ptr<Problem> problem_;
-    TermId simplex_term_ = -1;
-    std::vector<TermId> assembly_terms_;
-    BlockId shifted_block_ = -1;
+    std::unique_ptr<SimplexAssemblyEngine<D>> engine_;
     std::vector<GraphEdge> tree_;
-    std::vector<Index> translation_simplices_;  ///< simplices with T variables, in order
-    std::vector<Index> translation_offset_;     ///< per simplex: offset of T_s in x, or -1
+    Index num_translation_simplices_ = 0;
     std::vector<std::pair<Index, Vec<D>>> anchor_translations_;  ///< r-SA anchors
 };
 

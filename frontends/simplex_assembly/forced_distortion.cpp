@@ -15,6 +15,7 @@ template <int D>
 std::vector<Index> barrier_forced_simplices(const PreparedProblem<D>& p,
                                             const SimplexAssemblyOptions& options,
                                             double exponent) {
+    if (!p.energy) return {};  // only the problem's own energies: no built-in barrier to measure
     std::vector<Index> handle_row(p.mesh.num_vertices(), -1);
     for (std::size_t k = 0; k < p.input->handles.size(); ++k)
         handle_row[p.input->handles[k]] = static_cast<Index>(k);
@@ -41,15 +42,19 @@ Index simplices_beyond_barrier_cap(const PreparedProblem<D>& p, const Eigen::Mat
     std::vector<unsigned char> is_handle(p.mesh.num_vertices(), 0);
     for (Index h : p.input->handles) is_handle[h] = 1;
     const std::vector<Mat<D>> A = linear_parts<D>(p.mesh, p.frames, positions);
-    const double s_scale = p.energy->options().barrier.s;
     return tbb::parallel_reduce(
         tbb::blocked_range<Index>(0, p.mesh.num_simplices(), 4096), Index(0),
         [&](const tbb::blocked_range<Index>& r, Index count) {
             for (Index s = r.begin(); s != r.end(); ++s) {
                 bool free = false;
                 for (int k = 0; k <= D; ++k) free |= !is_handle[p.mesh.simplices(s, k)];
-                if (free && s_scale * p.energy->barrier_distortion(A[s]) > kBarrierExponentCap)
-                    ++count;
+                if (!free) continue;
+                for (const auto& energy : p.assembly.energies) {
+                    if (energy->beyond_exponent_cap(A[s])) {
+                        ++count;
+                        break;
+                    }
+                }
             }
             return count;
         },

@@ -4,11 +4,9 @@
 #include <set>
 #include <sstream>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_reduce.h>
-
 #include "energies/boundary_angle_energy.h"
 #include "energies/distortion.h"
+#include "energies/simplex_energy.h"
 #include "geometry/disassembly.h"
 #include "geometry/handle_feasibility.h"
 #include "geometry/local_injectivity.h"
@@ -68,8 +66,25 @@ void open_boundary_angles(const SimplicialMesh& mesh, const std::vector<Boundary
     }
 }
 
-void check_input(const MappingProblem& p, int d) {
+void check_input(const MappingProblem& p, const SimplexAssemblyOptions& options, int d) {
     const std::string& src = p.source;
+    for (std::size_t k = 0; k < p.energies.size(); ++k) {
+        if (p.energies[k] == nullptr)
+            throw InvalidArgumentError(src + ": energy " + std::to_string(k) + " is null");
+        if (p.energies[k]->dimension() != d) {
+            throw InvalidArgumentError(
+                src + ": energy '" + p.energies[k]->name() + "' is an energy of " +
+                std::to_string(p.energies[k]->dimension()) + "x" +
+                std::to_string(p.energies[k]->dimension()) + " matrices, the mesh's simplices " +
+                "have dimension " + std::to_string(d));
+        }
+    }
+    if (!options.builtin_energy && p.energies.empty()) {
+        throw InvalidArgumentError(
+            src +
+            ": builtin_energy = false and the problem has no energy of its own: nothing "
+            "keeps the simplices from inverting");
+    }
     if (p.initial.rows() != p.mesh.num_vertices()) {
         throw InputError(src + ": the initial map has " + std::to_string(p.initial.rows()) +
                          " vertices, the rest mesh " + std::to_string(p.mesh.num_vertices()));
@@ -140,6 +155,46 @@ void require_feasible_handles(const MappingProblem& p, const Eigen::MatrixXd& ta
     }
 }
 
+/// The problem's edge constraints, checked, in normalized units (EdgeRow).
+template <int D>
+std::vector<EdgeRow<D>> edge_rows(const MappingProblem& p, const SimplicialMesh& normalized,
+                                  const MeshTopology& topology, double scale) {
+    std::vector<EdgeRow<D>> rows;
+    const Index nv = p.mesh.num_vertices();
+    for (std::size_t k = 0; k < p.constraints.size(); ++k) {
+        const EdgeConstraint& c = p.constraints[k];
+        const std::string what = p.source + ": constraint " + std::to_string(k) + " on edge (" +
+                                 std::to_string(c.a) + ", " + std::to_string(c.b) + ")";
+        if (c.a < 0 || c.a >= nv || c.b < 0 || c.b >= nv)
+            throw InputError(what + ": a vertex outside [0, " + std::to_string(nv) + ")");
+        if (c.normal.size() != D) {
+            throw InputError(what + ": its normal has " + std::to_string(c.normal.size()) +
+                             " entries, the map " + std::to_string(D));
+        }
+        if (!c.normal.allFinite() || !std::isfinite(c.value))
+            throw InputError(what + ": a non-finite normal or value");
+        const double length = c.normal.norm();
+        if (!(length > 0.0)) throw InputError(what + ": its normal is zero");
+        EdgeRow<D> row;
+        row.a = c.a;
+        row.b = c.b;
+        for (Index i = topology.vertex_begin[c.a]; i < topology.vertex_begin[c.a + 1]; ++i) {
+            const Index s = topology.simplices_of_vertex[i];
+            for (int m = 0; m < normalized.simplices.cols(); ++m)
+                if (c.a != c.b && normalized.simplices(s, m) == c.b) row.simplex = s;
+            if (row.simplex >= 0) break;
+        }
+        if (row.simplex < 0) throw InputError(what + ": not an edge of the mesh");
+        const double rest_length =
+            (normalized.vertices.row(c.b) - normalized.vertices.row(c.a)).norm();
+        if (!(rest_length > 0.0)) throw InputError(what + ": the rest edge has length zero");
+        row.normal = c.normal / (length * rest_length);
+        row.value = c.value * scale / (length * rest_length);
+        rows.push_back(row);
+    }
+    return rows;
+}
+
 }  // namespace
 
 template <int D>
@@ -151,7 +206,7 @@ std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
     p->input = &input;
     const SimplicialMesh& original = input.mesh;
     validate_mesh(original, input.source);
-    check_input(input, D);
+    check_input(input, options, D);
     p->topology = mesh_topology(original, input.source);
     for (Index h : input.handles) {
         if (!p->topology.used_vertex[h]) {
@@ -243,10 +298,17 @@ std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
             open_boundary_angles(original, in.fans, p->frames, in.start_linear, input.source);
         }
     }
-    p->energy = std::make_unique<SimplexEnergy<D>>(
-        simplex_energy_options(options), p->frames.volume,
-        options.mapping_distortion == DistortionType::kDifference ? in.reference_linear
-                                                                  : std::vector<Mat<D>>{});
+    if (options.builtin_energy) {
+        p->energy = std::make_shared<const SimplexEnergy<D>>(
+            simplex_energy_options(options), p->frames.volume,
+            options.mapping_distortion == DistortionType::kDifference ? in.reference_linear
+                                                                      : std::vector<Mat<D>>{});
+        in.energies.push_back(
+            std::make_shared<SimplexTermOf<D, SimplexEnergy<D>>>("simplex energy", p->energy));
+    }
+    for (const auto& energy : input.energies)
+        in.energies.push_back(std::static_pointer_cast<const SimplexTerm<D>>(energy));
+    in.constraints = edge_rows<D>(input, p->mesh, p->topology, p->scale);
 
     // Eq. 6: handles at their targets, one vertex of each anchored simplex at its start image.
     p->pinned = p->start;
@@ -272,16 +334,9 @@ double mesh_energy(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions
     double boundary = 0.0;
     for (double theta : boundary_angle_sums(p.assembly.fans, positions))
         boundary += boundary_angle_barrier(theta);
-    return boundary + tbb::parallel_deterministic_reduce(
-                          tbb::blocked_range<Index>(0, p.mesh.num_simplices(), 1024), 0.0,
-                          [&](const tbb::blocked_range<Index>& r, double sum) {
-                              for (Index s = r.begin(); s != r.end() && sum < kInfinity; ++s) {
-                                  sum +=
-                                      p.energy->value(s, Eigen::Map<const Vec<D * D>>(A[s].data()));
-                              }
-                              return sum;
-                          },
-                          std::plus<double>());
+    double simplices = 0.0;
+    for (const auto& energy : p.assembly.energies) simplices += energy->sum(A);
+    return boundary + simplices;
 }
 
 template <int D>
@@ -323,12 +378,26 @@ void verify_result(const MappingProblem& input, const SimplexAssemblyOptions& op
     }
     v.handle_tolerance =
         options.handle_tolerance * bounding_box_diagonal(input.initial.leftCols(D));
-    v.bound = options.bound;
+    v.bound = options.builtin_energy ? options.bound : kInfinity;
     for (Index s = 0; s < original.num_simplices(); ++s) {
         const MatrixInvariants<double> m = matrix_invariants<D>(out[s], false);
         const double d =
             m.J > 0.0 ? distortion<D>(options.distortion, m, options.gamma) : kInfinity;
         v.max_distortion = std::max(v.max_distortion, d);
+    }
+    for (const auto& base : input.energies) {
+        const auto& energy = static_cast<const SimplexTerm<D>&>(*base);
+        if (energy.bounds_a_distortion())
+            v.bounds.push_back({energy.name(), energy.bound(), energy.max_distortion(out)});
+    }
+    v.constraints = static_cast<Index>(input.constraints.size());
+    v.constraint_tolerance = v.handle_tolerance;
+    for (const EdgeConstraint& c : input.constraints) {
+        const double length = c.normal.norm();
+        const Eigen::VectorXd edge =
+            (result.positions.row(c.b) - result.positions.row(c.a)).head(D).transpose();
+        const double residual = std::abs(c.normal.dot(edge) / length - c.value / length);
+        v.constraint_error = std::max(v.constraint_error, residual);
     }
     result.success = v.passed();
 }

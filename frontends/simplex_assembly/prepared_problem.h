@@ -27,9 +27,10 @@ struct PreparedProblem {
     Eigen::MatrixXd target_rows;    ///< #handles x D, original units
     Eigen::MatrixXd start;          ///< the initial map, normalized
     AssemblyInput<D> assembly;      ///< disassembled; its pointers refer to this object
+    /// The options' built-in mu E_m + E_C (also the first of assembly.energies); null with
+    /// builtin_energy = false. forced_distortion.h measures its barrier's distortion.
+    std::shared_ptr<const SimplexEnergy<D>> energy;
     MapQuality initial_quality;
-    /// The per-simplex energy mu w_i d_m(A_i) + E_C(A_i) of these options.
-    std::unique_ptr<SimplexEnergy<D>> energy;
     /// Eq. 6 with the handles at their targets and the first vertex of every anchored simplex
     /// at its image (`pinned`, normalized; `recovery_fixed` marks those vertices).
     Eigen::MatrixXd pinned;
@@ -57,9 +58,10 @@ std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
                                                     const SimplexAssemblyOptions& options,
                                                     StageTimes& times);
 
-/// The energy sum_i mu w_i d_m(A_i) + E_C(A_i) (+ E_theta of the boundary fans, when asked) of the
-/// map `positions` (normalized): +inf unless every simplex is positively oriented (against its
-/// rest orientation), under the bound, and every boundary angle sum below 2 pi.
+/// The energy of the per-simplex terms (the options' mu E_m + E_C and the problem's own; + E_theta
+/// of the boundary fans, when asked) of the map `positions` (normalized): +inf unless every
+/// simplex is positively oriented (against its rest orientation), under every bound, and every
+/// boundary angle sum below 2 pi.
 template <int D>
 double mesh_energy(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions);
 

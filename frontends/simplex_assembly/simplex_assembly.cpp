@@ -11,7 +11,6 @@
 #include "frontends/simplex_assembly/vertex_stage.h"
 #include "geometry/translation_gluing.h"
 #include "optim/errors.h"
-#include "optim/newton_solver.h"
 #include "optim/stopwatch.h"
 #include "optim/time_budget.h"
 
@@ -31,8 +30,16 @@ std::string Verification::describe() const {
             << ", " << handles << " handles)";
     }
     if (bound < kInfinity) {
-        out << ", largest distortion " << max_distortion << (within_bound() ? " <= " : " > ")
-            << "bound " << bound;
+        out << ", largest distortion " << max_distortion
+            << (max_distortion <= bound ? " <= " : " > ") << "bound " << bound;
+    }
+    for (const BoundCheck& b : bounds) {
+        out << ", largest " << b.name << " " << b.max_distortion << (b.within() ? " <= " : " > ")
+            << "bound " << b.bound;
+    }
+    if (constraints > 0) {
+        out << ", largest constraint error " << constraint_error << " (tolerance "
+            << constraint_tolerance << ", " << constraints << " constraints)";
     }
     return out.str();
 }
@@ -68,15 +75,18 @@ void start_from_initial_map(PreparedProblem<D>& prepared, const SimplexAssemblyO
     for (std::size_t k = 0; k < in.handles.size(); ++k)
         candidate.row(in.handles[k]) = in.targets[k].transpose();
     VertexStage from_initial =
-        run_vertex_stage<D>(prepared.mesh, prepared.frames, *prepared.energy, candidate, fixed,
-                            with_time_left(options, budget), observer.logger, in.fans);
+        run_vertex_stage<D>(prepared.mesh, prepared.frames, in.energies, candidate, fixed,
+                            with_time_left(options, budget), observer.logger,
+                            VertexStageTerms<D>{in.fans, in.constraints});
     if (from_initial.ran) {
         from_initial.note += " (from the initial map: the assembly's recovered mesh was not valid)";
         recovered = from_initial.positions;
         vertex = std::move(from_initial);
         return;
     }
-    if (options.bound < kInfinity || !in.fans.empty()) return;
+    if (options.bound < kInfinity || !in.fans.empty() || !in.constraints.empty()) return;
+    for (const auto& energy : in.energies)
+        if (energy->bounds_a_distortion() && energy->bound() < kInfinity) return;
     const MapQuality q = map_quality<D>(linear_parts<D>(prepared.mesh, prepared.frames, candidate),
                                         prepared.frames.volume);
     if (q.inverted > 0 || q.degenerate > 0) return;
@@ -86,8 +96,9 @@ void start_from_initial_map(PreparedProblem<D>& prepared, const SimplexAssemblyO
         "; the initial map, inversion-free but beyond what the barrier represents, is kept";
 }
 
-/// The whole mesh at once: Newton with the lambda schedule of section 4.4, recovery, and the
-/// vertex stage. Fills positions (original units) and the solver records of `result`.
+/// The whole mesh at once: the engine (its lambda schedule, section 4.4) with the hand-over of
+/// Eq. 6 as its hook, recovery, and the vertex stage. Fills positions (original units) and the
+/// solver records of `result`.
 template <int D>
 void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& options,
                 const TimeBudget& budget, const SimplexAssemblyObserver& observer,
@@ -98,8 +109,8 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
     const RestFrames<D>& frames = prepared.frames;
     const Index n = mesh.num_simplices();
     AssemblyProblem<D> assembly(in, options);
-    Problem& problem = assembly.problem();
-    result.num_variables = problem.num_variables();
+    SimplexAssemblyEngine<D>& engine = assembly.engine();
+    result.num_variables = engine.problem().num_variables();
     result.num_translation_simplices = assembly.num_translation_simplices();
     result.num_tree_edges = assembly.num_tree_edges();
     result.num_anchored_simplices = static_cast<Index>(in.anchored_simplices.size());
@@ -117,93 +128,47 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
         }
         return prepared.to_original(corners);
     };
-    double lambda = options.lambda_min;
-    auto set_lambda = [&](double value) {
-        lambda = value;
-        for (TermId t : assembly.assembly_terms()) problem.set_weight(t, lambda);
-        if (assembly.shifted_translation_block() >= 0) {
-            problem.set_hessian_shift(assembly.shifted_translation_block(),
-                                      options.translation_shift * lambda);
-        }
-    };
-    set_lambda(lambda);
-    log_line(observer.logger, "iter      energy   assembly     lambda      step  ls     time");
-    NewtonOptions newton;
-    newton.max_iterations = options.max_iterations;
-    newton.max_time_seconds = with_time_left(options, budget).max_time_seconds;
-    newton.gradient_tolerance = newton.decrement_tolerance = newton.function_tolerance = 0.0;
-    newton.projection = options.projection;
-    newton.projection_epsilon = options.projection_epsilon;
-    newton.linear_solver = options.linear_solver;
-    newton.num_threads = options.num_threads;
-    double last_assembly = kInfinity;
+    AssemblyEngineOptions schedule = engine_options(with_time_left(options, budget));
+    // The 1e-6 lambda shift is meant for r-SA's few, possibly redundant translations (DESIGN.md).
+    if (options.variant != Variant::kReduced) schedule.translation_shift = 0.0;
     Eigen::MatrixXd handover;  // the feasible recovered mesh that ended the assembly, if any
-    newton.callbacks.push_back([&](const IterationContext& c) {
-        double assembly_value = 0.0;
-        for (TermId t : assembly.assembly_terms()) assembly_value += c.term_values[t];
-        last_assembly = assembly_value;
-        AssemblyRecord row;
-        row.iteration = c.record.iteration;
-        row.energy = c.record.energy;
-        row.assembly = assembly_value;
-        row.barrier = c.term_values[assembly.simplex_term()];
-        row.lambda = lambda;
-        row.step = c.record.step_length;
-        row.line_search_trials = c.record.line_search_trials;
-        row.time = c.record.cumulative_time;
-        result.iterations.push_back(row);
-        char line[160];
-        std::snprintf(line, sizeof line, "%4d  %10.4e  %9.3e  %9.3e  %8.2e  %2d  %6.2fs",
-                      row.iteration, row.energy, row.assembly, row.lambda, std::max(row.step, 0.0),
-                      std::max(row.line_search_trials, 0), row.time);
-        log_line(observer.logger, line);
-        if (observer.snapshot) observer.snapshot(row.iteration, corners_of(c.problem.variables()));
-        if (options.vertex_stage || options.until_valid) {
-            // Hand over as soon as the mesh recovered from the current A_i is inversion-free and
-            // within the bound: one right-hand side and triangular solves of Eq. 6.
-            Stopwatch check;
-            Eigen::MatrixXd positions = prepared.recovery().recover(
-                assembly.linear_parts(c.problem.variables()), prepared.pinned);
-            const double recovered_energy = mesh_energy<D>(prepared, positions);
-            const bool ok = options.until_valid
-                                ? std::isfinite(recovered_energy)
-                                : recovered_energy <= options.handover_ratio * row.barrier;
-            result.times.recovery += check.seconds();
-            if (ok) {
-                handover = std::move(positions);
-                result.assembly_stop = options.until_valid
-                                           ? "the recovered map is valid"
-                                           : "the recovered map is handed to the vertex stage";
-                return CallbackResult::kStopSuccess;
-            }
-        }
-        // Converged: assembled, or at lambda_max, where the weights no longer change and the
-        // schedule can do nothing more (the paper runs on to its 200 iterations; on tlc/stgc-3d
-        // that was 100 iterations of steps changing E by 1e-15 of itself).
-        const bool assembled = assembly_value < options.assembly_tolerance;
-        if (row.iteration > 0 && (assembled || lambda >= options.lambda_max)) {
-            const double before = c.record.energy + c.record.energy_change;
-            if (c.record.energy_change <= options.energy_tolerance * std::abs(before)) {
-                if (!assembled) result.assembly_stop = "E converged at lambda_max";
-                return CallbackResult::kStopSuccess;
-            }
-        }
-        const double ratio = assembly_value > 0.0 ? row.barrier / assembly_value : kInfinity;
-        set_lambda(std::min(options.lambda_min * std::max(ratio, 1.0), options.lambda_max));
-        return CallbackResult::kContinue;
-    });
-    result.newton = solve(problem, newton);
-    result.final_lambda = lambda;
-    result.final_assembly = last_assembly;
-    result.assembled = last_assembly < options.assembly_tolerance;
+    AssemblyHooks hooks;
+    hooks.logger = observer.logger;
+    hooks.after_iteration = [&](const AssemblyRecord& row, const Eigen::VectorXd& x) {
+        if (observer.snapshot) observer.snapshot(row.iteration, corners_of(x));
+        if (!options.vertex_stage && !options.until_valid) return std::string();
+        // Hand over as soon as the mesh recovered from the current A_i is inversion-free and
+        // within the bound: one right-hand side and triangular solves of Eq. 6.
+        Stopwatch check;
+        Eigen::MatrixXd positions =
+            prepared.recovery().recover(assembly.linear_parts(x), prepared.pinned);
+        const double recovered_energy = mesh_energy<D>(prepared, positions);
+        const bool ok = options.until_valid
+                            ? std::isfinite(recovered_energy)
+                            : recovered_energy <= options.handover_ratio * row.barrier;
+        result.times.recovery += check.seconds();
+        if (!ok) return std::string();
+        handover = std::move(positions);
+        return std::string(options.until_valid ? "the recovered map is valid"
+                                               : "the recovered map is handed to the vertex stage");
+    };
+    AssemblyRun run = engine.run(schedule, hooks);
+    result.assembly_stop_reason = run.stop;
+    if (run.stop == AssemblyStop::kHook || run.stop == AssemblyStop::kConvergedAtLambdaMax)
+        result.assembly_stop = run.message;
+    result.iterations = std::move(run.records);
+    result.newton = std::move(run.newton);
+    result.final_lambda = run.final_lambda;
+    result.final_assembly = run.final_assembly;
+    result.assembled = run.assembled;
     result.times.optimization += stage.lap();
-
     // Recovery: positions by Eq. 6 with the handles at their targets (translations are not needed:
     // every part has a handle or an anchored simplex, whose start image is pinned).
     Eigen::MatrixXd recovered =
-        handover.size() > 0 ? handover
-                            : prepared.recovery().recover(
-                                  assembly.linear_parts(problem.variables()), prepared.pinned);
+        handover.size() > 0
+            ? handover
+            : prepared.recovery().recover(assembly.linear_parts(engine.problem().variables()),
+                                          prepared.pinned);
     result.times.recovery += stage.lap();
 
     if (options.vertex_stage && !options.until_valid && budget.exhausted()) {
@@ -214,9 +179,9 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
         for (Index s : in.anchored_simplices) {
             for (int k = 0; k <= D; ++k) fixed[mesh.simplices(s, k)] = 1;
         }
-        VertexStage vertex =
-            run_vertex_stage<D>(mesh, frames, *prepared.energy, recovered, fixed,
-                                with_time_left(options, budget), observer.logger, in.fans);
+        VertexStage vertex = run_vertex_stage<D>(mesh, frames, in.energies, recovered, fixed,
+                                                 with_time_left(options, budget), observer.logger,
+                                                 VertexStageTerms<D>{in.fans, in.constraints});
         if (!vertex.ran)
             start_from_initial_map<D>(prepared, options, budget, observer, fixed, recovered,
                                       vertex);

@@ -4,9 +4,9 @@
 //   1. normalize: rest and map coordinates centred, scaled by the rest bounding-box diagonal;
 //   2. disassemble: the initial map's linear parts A_i^0 are projected into the barrier's feasible
 //      set (closest similarity or rotation, section 4.2); T_i^0 from the initial map;
-//   3. assemble: minimize mu E_m + E_C + lambda E~_assembly (Eq. 10) with projected Newton, lambda
-//      following section 4.4's schedule, until E~_assembly < 1e-12 and E changes by less than 1e-8
-//      (relative, within a step), or 200 iterations;
+//   3. assemble: the engine (engine.h) minimizes mu E_m + E_C + lambda E~_assembly (Eq. 10) with
+//      projected Newton and section 4.4's schedule, until E~_assembly < 1e-12 and E changes by
+//      less than 1e-8 (relative, within a step), or 200 iterations;
 //   4. recover: translations by gluing (Appendix), vertex positions by Eq. 6 with handles fixed;
 //      with options.vertex_stage (the default) the assembly stops as soon as E~_assembly < 1e-12
 //      and Newton finishes on the vertex positions (vertex_stage.h);
@@ -22,13 +22,29 @@
 #include <string>
 #include <vector>
 
+#include "frontends/simplex_assembly/engine_options.h"
 #include "frontends/simplex_assembly/simplex_assembly_options.h"
+#include "frontends/simplex_assembly/simplex_term.h"
 #include "geometry/map_quality.h"
 #include "geometry/simplicial_mesh.h"
 #include "optim/logger.h"
 #include "optim/newton_summary.h"
 
 namespace sa {
+
+/// A user's linear assembly constraint on the image of a mesh edge (a, b):
+///     normal . (f(b) - f(a)) = value,
+/// e.g. "these boundary vertices stay on a plane" (one row per edge between them, value 0; a
+/// handle among them fixes where the plane is). `normal` has d entries (the map's dimension)
+/// and need not be a unit vector: the row is normal / |normal|, value / |normal|. Added to
+/// E~_assembly as n^T A_s (u_b - u_a) = value on one simplex s containing the edge (the edge
+/// assembly of Eq. 7 carries it to the others), as n . (x_b - x_a) = value in the vertex stage,
+/// and verified on the output.
+struct EdgeConstraint {
+    Index a = -1, b = -1;
+    Eigen::VectorXd normal;
+    double value = 0.0;
+};
 
 struct MappingProblem {
     SimplicialMesh mesh;         ///< the rest shape
@@ -41,18 +57,22 @@ struct MappingProblem {
     /// Triangles mapped to the plane only: add the boundary-angle barrier E_theta (section 5.1)
     /// so that the boundary stays locally injective (angle sums below 2 pi); full mode only.
     bool boundary_injective = false;
+    /// The problem's own per-simplex energies of A (simplex_term.h; element s = simplex s of
+    /// `mesh`, A in its rest frame): mapping energies and barriers, added to the options'
+    /// mu E_m + E_C (or in its place, with SimplexAssemblyOptions::builtin_energy = false).
+    /// A barrier on a distortion (DistortionBarrier) is verified on the output like the built-in
+    /// one, and takes part in the optimal-bound rounds.
+    std::vector<std::shared_ptr<const SimplexTermBase>> energies;
+    /// The problem's own linear assembly constraints.
+    std::vector<EdgeConstraint> constraints;
 };
 
-/// One iteration of the assembly, as the paper's Figure 4 plots it.
-struct AssemblyRecord {
-    int iteration = 0;
-    double energy = 0.0;    ///< E at the lambda of this step
-    double assembly = 0.0;  ///< E~_assembly (unweighted)
-    double barrier = 0.0;   ///< mu E_m + E_C
-    double lambda = 0.0;    ///< lambda used for this step
-    double step = -1.0;     ///< accepted step length (-1 at iteration 0)
-    int line_search_trials = -1;
-    double time = 0.0;  ///< seconds since the optimization started
+/// A problem's own barrier on a distortion, measured on the output.
+struct BoundCheck {
+    std::string name;
+    double bound = kInfinity;
+    double max_distortion = 0.0;  ///< +inf when a simplex is inverted
+    bool within() const { return max_distortion <= bound; }
 };
 
 struct StageTimes {
@@ -78,11 +98,21 @@ struct Verification {
     double handle_tolerance = 0.0;  ///< handle_tolerance times the initial map's diagonal
     double bound = kInfinity;       ///< K
     double max_distortion = 0.0;    ///< largest barrier distortion d of the output
+    /// The problem's own barriers on a distortion (MappingProblem::energies).
+    std::vector<BoundCheck> bounds;
+    Index constraints = 0;              ///< MappingProblem::constraints
+    double constraint_error = 0.0;      ///< largest |n . (x_b - x_a) - value|, n a unit vector
+    double constraint_tolerance = 0.0;  ///< as handle_tolerance
     bool passed() const {
         return inverted == 0 && degenerate == 0 && branched == 0 &&
-               handle_error <= handle_tolerance;
+               handle_error <= handle_tolerance && constraint_error <= constraint_tolerance;
     }
-    bool within_bound() const { return max_distortion <= bound; }
+    bool within_bound() const {
+        if (!(max_distortion <= bound)) return false;
+        for (const BoundCheck& b : bounds)
+            if (!b.within()) return false;
+        return true;
+    }
     /// One sentence: what was measured and the outcome.
     std::string describe() const;
 };
@@ -132,6 +162,8 @@ struct SimplexAssemblyResult {
     MapQuality initial_quality;  ///< of the initial map
     MapQuality final_quality;    ///< of the output positions
     NewtonSummary newton;        ///< the assembly stage
+    /// Why the assembly stage stopped (the engine's reason; full mode).
+    AssemblyStop assembly_stop_reason = AssemblyStop::kMaxIterations;
     /// Why the assembly stage stopped early, when it did (empty otherwise): the recovered map
     /// was valid (until_valid) or good enough to hand over, or E stopped changing at lambda_max.
     std::string assembly_stop;

@@ -57,6 +57,22 @@ SimplexEnergyOptions simplex_energy_options(const SimplexAssemblyOptions& o) {
     return e;
 }
 
+AssemblyEngineOptions engine_options(const SimplexAssemblyOptions& o) {
+    AssemblyEngineOptions e;
+    e.lambda_min = o.lambda_min;
+    e.lambda_max = o.lambda_max;
+    e.assembly_tolerance = o.assembly_tolerance;
+    e.energy_tolerance = o.energy_tolerance;
+    e.max_iterations = o.max_iterations;
+    e.max_time_seconds = o.max_time_seconds;
+    e.projection = o.projection;
+    e.projection_epsilon = o.projection_epsilon;
+    e.translation_shift = o.translation_shift;
+    e.linear_solver = o.linear_solver;
+    e.num_threads = o.num_threads;
+    return e;
+}
+
 Initialization SimplexAssemblyOptions::effective_initialization() const {
     if (initialization) return *initialization;
     return distortion == DistortionType::kConformal ? Initialization::kClosestSimilarity
@@ -78,21 +94,9 @@ void SimplexAssemblyOptions::validate() const {
     if (!(s > 0.0) || !std::isfinite(s)) fail("s", s, "must be finite and > 0");
     if (!(gamma >= 0.0 && gamma <= 1.0)) fail("gamma", gamma, "must be in [0, 1]");
     if (!(mu >= 0.0) || !std::isfinite(mu)) fail("mu", mu, "must be finite and >= 0");
-    if (!(lambda_min > 0.0) || !std::isfinite(lambda_min))
-        fail("lambda_min", lambda_min, "must be finite and > 0");
-    if (!(lambda_max >= lambda_min) || !std::isfinite(lambda_max))
-        fail("lambda_max", lambda_max, "must be finite and >= lambda_min");
-    if (!(projection_epsilon >= 0.0))
-        fail("projection_epsilon", projection_epsilon, "must be >= 0");
-    if (!(translation_shift >= 0.0) || !std::isfinite(translation_shift))
-        fail("translation_shift", translation_shift, "must be finite and >= 0");
-    if (!(assembly_tolerance > 0.0)) fail("assembly_tolerance", assembly_tolerance, "must be > 0");
-    if (!(energy_tolerance >= 0.0)) fail("energy_tolerance", energy_tolerance, "must be >= 0");
+    engine_options(*this).validate();  // the schedule's, termination's and solver's fields
     if (!(handover_ratio >= 1.0)) fail("handover_ratio", handover_ratio, "must be >= 1");
-    if (max_iterations < 1) fail("max_iterations", max_iterations, "must be >= 1");
-    if (!(max_time_seconds > 0.0)) fail("max_time_seconds", max_time_seconds, "must be > 0");
     if (!(handle_tolerance > 0.0)) fail("handle_tolerance", handle_tolerance, "must be > 0");
-    if (num_threads < 0) fail("num_threads", num_threads, "must be >= 0 (0 = all cores)");
     if (rings < 1) fail("rings", rings, "must be >= 1");
     if (max_rings < rings) fail("max_rings", max_rings, "must be >= rings");
     if (max_rounds < 0) fail("max_rounds", max_rounds, "must be >= 0");

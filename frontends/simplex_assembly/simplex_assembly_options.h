@@ -7,6 +7,7 @@
 
 #include "energies/distortion.h"
 #include "energies/simplex_energy.h"
+#include "frontends/simplex_assembly/engine_options.h"
 #include "geometry/disassembly.h"
 #include "optim/hessian_projection.h"
 #include "optim/linear_solver.h"
@@ -46,6 +47,9 @@ struct SimplexAssemblyOptions {
     std::optional<DistortionType> mapping_distortion;
     /// mu, the weight of E_m.
     double mu = 1000.0;
+    /// Whether the energy above (mu E_m + E_C of these options) is added; false leaves only the
+    /// problem's own energies (MappingProblem::energies), which must then hold at least one.
+    bool builtin_energy = true;
 
     Variant variant = Variant::kReduced;
     /// How the initial A_i are made feasible (section 4.2); by default the closest similarity for
@@ -136,6 +140,9 @@ struct SimplexAssemblyOptions {
 
 /// The per-simplex energy's options (barrier, E_m) that `options` describe.
 SimplexEnergyOptions simplex_energy_options(const SimplexAssemblyOptions& options);
+
+/// The engine's schedule, Hessian modification and termination that `options` describe.
+AssemblyEngineOptions engine_options(const SimplexAssemblyOptions& options);
 
 /// `options` with max_time_seconds set to what `budget` has left, for a stage or a submesh: at
 /// least a millisecond, so a stage that starts takes one step (it starts only while time is left).

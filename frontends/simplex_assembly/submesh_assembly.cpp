@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <set>
+#include <unordered_map>
 
 #include "energies/distortion.h"
 #include "frontends/simplex_assembly/forced_distortion.h"
@@ -34,7 +36,10 @@ struct Region {
     int rings = 0;
 };
 
-/// Solves one region on `positions` (original units); returns the local result.
+/// Solves one region on `positions` (original units); returns the local result. The region gets
+/// the problem's own energies restricted to its simplices and its constraints on the region's
+/// edges (the others have both ends fixed, outside the region or on its boundary).
+template <int D>
 SimplexAssemblyResult solve_region(const MappingProblem& input, const MeshTopology& topology,
                                    const Eigen::MatrixXd& positions,
                                    const std::vector<unsigned char>& is_handle,
@@ -50,6 +55,30 @@ SimplexAssemblyResult solve_region(const MappingProblem& input, const MeshTopolo
         local.initial.row(i) = positions.row(sub.vertices[i]);
         if (sub.on_region_boundary[i] || is_handle[sub.vertices[i]])
             local.handles.push_back(static_cast<Index>(i));
+    }
+    for (const auto& energy : input.energies)
+        local.energies.push_back(
+            static_cast<const SimplexTerm<D>&>(*energy).restricted(sub.simplices));
+    if (!input.constraints.empty()) {
+        std::unordered_map<Index, Index> local_vertex;
+        for (std::size_t i = 0; i < sub.vertices.size(); ++i)
+            local_vertex.emplace(sub.vertices[i], static_cast<Index>(i));
+        std::set<std::pair<Index, Index>> edges;
+        for (Index s = 0; s < sub.mesh.num_simplices(); ++s) {
+            for (int i = 0; i <= D; ++i) {
+                for (int j = i + 1; j <= D; ++j) {
+                    const Index a = sub.mesh.simplices(s, i), b = sub.mesh.simplices(s, j);
+                    edges.emplace(std::min(a, b), std::max(a, b));
+                }
+            }
+        }
+        for (const EdgeConstraint& c : input.constraints) {
+            const auto a = local_vertex.find(c.a), b = local_vertex.find(c.b);
+            if (a == local_vertex.end() || b == local_vertex.end()) continue;
+            if (!edges.count({std::min(a->second, b->second), std::max(a->second, b->second)}))
+                continue;
+            local.constraints.push_back({a->second, b->second, c.normal, c.value});
+        }
     }
     SimplexAssemblyOptions o = options;
     o.mode = SolveMode::kFull;
@@ -189,7 +218,7 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
                 const int inner = members.size() == 1 ? threads : 1;
                 arena.execute([&] {
                     tbb::parallel_for(std::size_t(0), members.size(), [&](std::size_t i) {
-                        solved[i] = solve_region(
+                        solved[i] = solve_region<D>(
                             input, p.topology, positions, is_handle, pending[members[i]],
                             with_time_left(options, budget), inner,
                             members.size() == 1 ? observer.logger : Logger{}, subs[i]);
@@ -203,8 +232,7 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
                     stats.largest_submesh =
                         std::max(stats.largest_submesh, Index(region.simplices.size()));
                     stats.max_rings = std::max(stats.max_rings, region.rings);
-                    const bool ok =
-                        r.success && (options.bound == kInfinity || r.verification.within_bound());
+                    const bool ok = r.success && r.verification.within_bound();
                     if (ok) {
                         ++record.solved;
                         for (Index v : subs[i].vertices) repaired[v] = 1;
@@ -264,8 +292,9 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
             for (int k = 0; k <= D; ++k) fixed[p.mesh.simplices(s, k)] = 1;
         }
         VertexStage vertex = run_vertex_stage<D>(
-            p.mesh, p.frames, *p.energy, (positions.rowwise() - p.map_center) * p.scale, fixed,
-            with_time_left(options, budget), observer.logger);
+            p.mesh, p.frames, p.assembly.energies, (positions.rowwise() - p.map_center) * p.scale,
+            fixed, with_time_left(options, budget), observer.logger,
+            VertexStageTerms<D>{{}, p.assembly.constraints});
         result.vertex_stage_ran = vertex.ran;
         result.vertex_stage_note = vertex.note;
         result.vertex_stage = vertex.newton;

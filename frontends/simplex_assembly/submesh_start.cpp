@@ -68,14 +68,19 @@ std::vector<Index> bad_simplices(const PreparedProblem<D>& p, const std::vector<
     tbb::parallel_for(Index(0), n, [&](Index s) {
         const double det = A[s].determinant();
         det_volume[s] = std::abs(det) * p.frames.volume[s];
-        rejected[s] = !std::isfinite(det) ||
-                      !std::isfinite(p.energy->value(s, Eigen::Map<const Vec<D * D>>(A[s].data())));
-        if (rejected[s] || beyond_cap_allowed) return;
-        bool free = false;
-        for (int k = 0; k <= D; ++k) free |= !is_handle[p.mesh.simplices(s, k)];
-        rejected[s] = free && p.energy->options().barrier.s * p.energy->barrier_distortion(A[s]) >
-                                  kBarrierExponentCap;
+        rejected[s] = !std::isfinite(det);
     });
+    for (const auto& energy : p.assembly.energies) energy->mark_infeasible(A, rejected);
+    if (!beyond_cap_allowed) {
+        tbb::parallel_for(Index(0), n, [&](Index s) {
+            if (rejected[s]) return;
+            bool free = false;
+            for (int k = 0; k <= D; ++k) free |= !is_handle[p.mesh.simplices(s, k)];
+            if (!free) return;
+            for (const auto& energy : p.assembly.energies)
+                if (energy->beyond_exponent_cap(A[s])) rejected[s] = 1;
+        });
+    }
     double largest = 0.0;
     for (double v : det_volume) {
         if (std::isfinite(v)) largest = std::max(largest, v);

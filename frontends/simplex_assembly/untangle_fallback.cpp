@@ -78,8 +78,9 @@ bool untangle_fallback(PreparedProblem<D>& p, const SimplexAssemblyOptions& opti
     result.times.optimization += watch.lap();
     if (u.untangled && options.vertex_stage && !options.until_valid && !budget.exhausted()) {
         const VertexStage vertex =
-            run_vertex_stage<D>(p.mesh, p.frames, *p.energy, positions, fixed_vertices<D>(p),
-                                with_time_left(options, budget), observer.logger);
+            run_vertex_stage<D>(p.mesh, p.frames, p.assembly.energies, positions,
+                                fixed_vertices<D>(p), with_time_left(options, budget),
+                                observer.logger, VertexStageTerms<D>{{}, p.assembly.constraints});
         if (vertex.ran) {
             positions = vertex.positions;
             result.vertex_stage_ran = true;

@@ -49,10 +49,11 @@ VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOp
     const std::vector<Mat<D>> references = options.mapping_distortion == DistortionType::kDifference
                                                ? prepared.assembly.reference_linear
                                                : std::vector<Mat<D>>{};
+    const SimplexEnergy<D> measure(base, prepared.frames.volume, references);
     auto largest_distortion = [&](const Eigen::MatrixXd& positions) {
         double largest = 0.0;
         for (const Mat<D>& A : linear_parts<D>(prepared.mesh, prepared.frames, positions))
-            largest = std::max(largest, prepared.energy->barrier_distortion(A));
+            largest = std::max(largest, measure.barrier_distortion(A));
         return largest;
     };
     result.times.setup += stage.lap();
@@ -77,8 +78,9 @@ VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOp
         // e^{s d} = 1 + s d + ...: for s << 1 the part of E that moves is s times smaller, and so
         // must be the relative change that ends the round.
         o.energy_tolerance = options.energy_tolerance * std::min(1.0, s);
-        VertexStage v = run_vertex_stage<D>(prepared.mesh, prepared.frames, energy, x, fixed, o,
-                                            observer.logger, prepared.assembly.fans);
+        VertexStage v = run_vertex_stage<D>(
+            prepared.mesh, prepared.frames, {simplex_term<D>("simplex energy", energy)}, x, fixed,
+            o, observer.logger, VertexStageTerms<D>{prepared.assembly.fans, {}});
         if (v.ran) x = std::move(v.positions);
         round.iterations = v.newton.num_steps();
         round.termination = v.note;

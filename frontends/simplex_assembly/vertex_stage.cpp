@@ -1,46 +1,32 @@
 #include "frontends/simplex_assembly/vertex_stage.h"
 
-#include <cstdio>
-
 #include "energies/boundary_angle_energy.h"
-#include "energies/vertex_copy_energies.h"
-#include "optim/newton_solver.h"
-#include "optim/problem.h"
+#include "frontends/simplex_assembly/engine.h"
 
 namespace sa {
 
 template <int D>
 VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& frames,
-                             const SimplexEnergy<D>& energy, const Eigen::MatrixXd& start,
-                             const std::vector<unsigned char>& fixed,
+                             const std::vector<std::shared_ptr<const SimplexTerm<D>>>& energies,
+                             const Eigen::MatrixXd& start, const std::vector<unsigned char>& fixed,
                              const SimplexAssemblyOptions& options, const Logger& logger,
-                             const std::vector<BoundaryFan>& fans) {
+                             const VertexStageTerms<D>& terms) {
     VertexStage result;
     result.positions = start;
     const Index nv = mesh.num_vertices();
-    // Variables: vertex-major coordinates, x[D v + c].
-    Eigen::VectorXd x(static_cast<Index>(D) * nv);
-    for (Index v = 0; v < nv; ++v) x.template segment<D>(D * v) = start.row(v).transpose();
+    std::vector<std::array<Index, D + 1>> simplices(mesh.num_simplices());
+    for (Index s = 0; s < mesh.num_simplices(); ++s)
+        for (int k = 0; k <= D; ++k) simplices[s][k] = mesh.simplices(s, k);
+    SimplexAssemblyEngine<D> engine = SimplexAssemblyEngine<D>::vertex_positions(
+        start.leftCols(D), std::move(simplices), frames.corners, frames.edge_inverse);
     // Simplices whose vertices are all fixed keep a constant energy: they are left out.
-    std::vector<std::array<Index, D*(D + 1)>> elements;
     std::vector<Index> moving;
-    std::vector<Mat<D>> rest_inverse;
     for (Index s = 0; s < mesh.num_simplices(); ++s) {
         bool moves = false;
         for (int k = 0; k <= D; ++k) moves |= !fixed[mesh.simplices(s, k)];
-        if (!moves) continue;
-        moving.push_back(s);
-        rest_inverse.push_back(frames.edge_inverse[s]);
-        std::array<Index, D*(D + 1)> e;
-        for (int k = 0; k <= D; ++k) {
-            for (int c = 0; c < D; ++c) e[D * k + c] = D * mesh.simplices(s, k) + c;
-        }
-        elements.push_back(e);
+        if (moves) moving.push_back(s);
     }
-    Problem problem(x);
-    problem.add_term("simplex energy",
-                     VertexSimplexEnergy<D>(energy.subset(moving), std::move(rest_inverse)),
-                     std::move(elements));
+    for (const auto& energy : energies) energy->add_to(engine, moving);
     if constexpr (D == 2) {
         // E_theta on the positions of each boundary vertex and its fan neighbours.
         [&]<int... k>(std::integer_sequence<int, k...>) {
@@ -48,31 +34,47 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
                 [&] {
                     constexpr int K = k + 1;
                     std::vector<std::array<Index, 2 * K + 4>> angle_elements;
-                    for (const BoundaryFan& fan : fans) {
+                    for (const BoundaryFan& fan : terms.fans) {
                         if (int(fan.triangles.size()) != K) continue;
                         std::array<Index, 2 * K + 4> e;
-                        e[0] = 2 * fan.vertex;
-                        e[1] = 2 * fan.vertex + 1;
+                        const auto center = engine.vertex_variables(fan.vertex);
+                        e[0] = center[0];
+                        e[1] = center[1];
                         for (int m = 0; m <= K; ++m) {
-                            e[2 + 2 * m] = 2 * fan.neighbours[m];
-                            e[3 + 2 * m] = 2 * fan.neighbours[m] + 1;
+                            const auto neighbour = engine.vertex_variables(fan.neighbours[m]);
+                            e[2 + 2 * m] = neighbour[0];
+                            e[3 + 2 * m] = neighbour[1];
                         }
                         angle_elements.push_back(e);
                     }
                     if (!angle_elements.empty()) {
-                        problem.add_term("boundary angle " + std::to_string(K),
-                                         BoundaryAngleVertexEnergy<K>{}, std::move(angle_elements));
+                        engine.add_barrier("boundary angle " + std::to_string(K),
+                                           BoundaryAngleVertexEnergy<K>{},
+                                           std::move(angle_elements));
                     }
                 }(),
                 ...);
         }
         (std::make_integer_sequence<int, kMaxFan>{});
     }
-    for (Index v = 0; v < nv; ++v) {
-        if (!fixed[v]) continue;
-        for (int c = 0; c < D; ++c) problem.set_fixed(D * v + c);
+    if (!terms.constraints.empty()) {
+        // n . (x_b - x_a) = value on the two vertices' positions.
+        std::vector<LinearConstraint<2 * D, 1>> rows;
+        rows.reserve(terms.constraints.size());
+        for (const EdgeRow<D>& c : terms.constraints) {
+            LinearConstraint<2 * D, 1> row;
+            const auto a = engine.vertex_variables(c.a), b = engine.vertex_variables(c.b);
+            std::copy(a.begin(), a.end(), row.variables.begin());
+            std::copy(b.begin(), b.end(), row.variables.begin() + D);
+            row.rows.coefficients << -c.normal.transpose(), c.normal.transpose();
+            row.rows.rhs[0] = c.value;
+            rows.push_back(row);
+        }
+        engine.template add_linear_constraints<2 * D, 1>("edge constraints", rows);
     }
-    if (!std::isfinite(problem.value())) {
+    for (Index v = 0; v < nv; ++v)
+        if (fixed[v]) engine.fix_vertex(v);
+    if (!std::isfinite(engine.problem().value())) {
         result.note = "skipped: the recovered mesh has an inverted simplex or one over the bound";
         return result;
     }
@@ -85,50 +87,38 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
         Eigen::Matrix<double, D, D + 1> corners;
         for (int k = 0; k <= D; ++k) corners.col(k) = start.row(mesh.simplices(s, k)).transpose();
         const Mat<D> A = linear_part<D>(frames, s, corners);
-        if (energy.options().barrier.s * energy.barrier_distortion(A) > kBarrierExponentCap)
-            ++beyond_cap;
+        for (const auto& energy : energies) {
+            if (energy->beyond_exponent_cap(A)) {
+                ++beyond_cap;
+                break;
+            }
+        }
     }
     if (beyond_cap > 0) {
         result.note = "skipped: " + std::to_string(beyond_cap) +
                       " simplices are so distorted that the barrier cannot rank the others";
         return result;
     }
-    NewtonOptions newton;
-    newton.max_iterations = options.max_iterations;
-    newton.max_time_seconds = options.max_time_seconds;
-    newton.gradient_tolerance = 0.0;  // scale-dependent; the two relative tests decide
-    newton.function_tolerance = options.energy_tolerance;
-    newton.projection = options.projection;
-    newton.projection_epsilon = options.projection_epsilon;
-    newton.linear_solver = options.linear_solver;
-    newton.num_threads = options.num_threads;
-    newton.callbacks.push_back([&](const IterationContext& c) {
-        if (c.record.iteration > 0) {
-            char line[160];
-            std::snprintf(line, sizeof line, "P%3d  %10.4e  %9s  %9s  %8.2e  %2d  %6.2fs",
-                          c.record.iteration, c.record.energy, "-", "-", c.record.step_length,
-                          c.record.line_search_trials, c.record.cumulative_time);
-            log_line(logger, line);
-        }
-        return CallbackResult::kContinue;
-    });
-    result.newton = solve(problem, newton);
+    AssemblyHooks hooks;
+    hooks.logger = logger;
+    AssemblyRun run = engine.run(engine_options(options), hooks);
+    result.newton = std::move(run.newton);
+    result.stop = run.stop;
     result.ran = true;
     result.note = to_string(result.newton.termination);
-    for (Index v = 0; v < nv; ++v)
-        result.positions.row(v) = problem.variables().template segment<D>(D * v).transpose();
+    result.positions.leftCols(D) = engine.positions(engine.problem().variables());
     return result;
 }
 
 template VertexStage run_vertex_stage<2>(const SimplicialMesh&, const RestFrames<2>&,
-                                         const SimplexEnergy<2>&, const Eigen::MatrixXd&,
-                                         const std::vector<unsigned char>&,
+                                         const std::vector<std::shared_ptr<const SimplexTerm<2>>>&,
+                                         const Eigen::MatrixXd&, const std::vector<unsigned char>&,
                                          const SimplexAssemblyOptions&, const Logger&,
-                                         const std::vector<BoundaryFan>&);
+                                         const VertexStageTerms<2>&);
 template VertexStage run_vertex_stage<3>(const SimplicialMesh&, const RestFrames<3>&,
-                                         const SimplexEnergy<3>&, const Eigen::MatrixXd&,
-                                         const std::vector<unsigned char>&,
+                                         const std::vector<std::shared_ptr<const SimplexTerm<3>>>&,
+                                         const Eigen::MatrixXd&, const std::vector<unsigned char>&,
                                          const SimplexAssemblyOptions&, const Logger&,
-                                         const std::vector<BoundaryFan>&);
+                                         const VertexStageTerms<3>&);
 
 }  // namespace sa

@@ -6,13 +6,19 @@
 // Newton keeps its quadratic convergence instead of fighting a condition number of 1e16
 // (measured in BENCHMARKS.md). Starting from the recovered, inversion-free mesh, the barrier and
 // the largest feasible step keep every iterate inversion-free and within the bound.
+//
+// It is the engine (engine.h) in its vertex layout: the per-simplex energies through the
+// adapter that evaluates them at A = X E^-1, E_theta in its vertex form, and the problem's own
+// linear constraints as its only assembly terms: with constraints the engine's schedule keeps
+// them (as in the assembly), without them it is plain projected Newton.
 
 #include <Eigen/Core>
 #include <string>
 #include <vector>
 
-#include "energies/simplex_energy.h"
+#include "frontends/simplex_assembly/assembly_problem.h"
 #include "frontends/simplex_assembly/simplex_assembly_options.h"
+#include "frontends/simplex_assembly/simplex_term.h"
 #include "geometry/boundary_fans.h"
 #include "geometry/rest_frames.h"
 #include "optim/logger.h"
@@ -25,15 +31,27 @@ struct VertexStage {
     std::string note;           ///< why it did not run, or how it ended
     Eigen::MatrixXd positions;  ///< #V x D (the start when it did not run)
     NewtonSummary newton;
+    AssemblyStop stop = AssemblyStop::kConverged;  ///< the engine's reason, when it ran
+};
+
+/// What the vertex stage minimizes besides the per-simplex energies.
+template <int D>
+struct VertexStageTerms {
+    /// Triangles only: the boundary-angle barrier E_theta on these fans.
+    std::vector<BoundaryFan> fans;
+    /// The problem's linear constraints (normalized units).
+    std::vector<EdgeRow<D>> constraints;
 };
 
 /// `start` #V x D in the driver's normalized coordinates; `fixed` flags handles and anchors;
-/// `fans` (triangles only) adds the boundary-angle barrier E_theta.
+/// `energies` are the per-simplex energies of A, each evaluated at A = X E^-1 of the vertex
+/// positions X (VertexSimplexEnergy: the adapter of v-SA). Simplices whose vertices are all
+/// fixed are left out. Newton runs as the engine's run() says.
 template <int D>
 VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& frames,
-                             const SimplexEnergy<D>& energy, const Eigen::MatrixXd& start,
-                             const std::vector<unsigned char>& fixed,
+                             const std::vector<std::shared_ptr<const SimplexTerm<D>>>& energies,
+                             const Eigen::MatrixXd& start, const std::vector<unsigned char>& fixed,
                              const SimplexAssemblyOptions& options, const Logger& logger,
-                             const std::vector<BoundaryFan>& fans = {});
+                             const VertexStageTerms<D>& terms = {});
 
 }  // namespace sa

@@ -1,0 +1,66 @@
+#pragma once
+// The Simplex Assembly engine's options and records (engine.h): the schedule, Hessian
+// modification and termination of the paper's section 4.4 with its constants, one record per
+// iteration, and why a run stopped. Apart from engine.h so that options structs can hold them
+// without pulling in the optimizer.
+
+#include <string>
+
+#include "optim/hessian_projection.h"
+#include "optim/linear_solver.h"
+#include "optim/types.h"
+
+namespace sa {
+
+/// One iteration of the assembly, as the paper's Figure 4 plots it.
+struct AssemblyRecord {
+    int iteration = 0;
+    double energy = 0.0;    ///< E at the lambda of this step
+    double assembly = 0.0;  ///< E~_assembly (unweighted)
+    double barrier = 0.0;   ///< the barrier side mu E_m + E_C (+ kind-3 barriers), weighted
+    double lambda = 0.0;    ///< lambda used for this step
+    double step = -1.0;     ///< accepted step length (-1 at iteration 0)
+    int line_search_trials = -1;
+    double time = 0.0;  ///< seconds since the optimization started
+};
+
+/// Why run() stopped.
+enum class AssemblyStop {
+    kAssembled,             ///< E~ < assembly_tolerance and E stopped changing (the paper's test)
+    kConvergedAtLambdaMax,  ///< lambda at lambda_max and E stopped changing, not assembled
+    kConverged,             ///< no assembly terms: E stopped changing (Newton's own tests)
+    kHook,                  ///< the front-end's hook stopped it (its reason is the message)
+    kNoFreeVariables,       ///< every variable is fixed
+    kMaxIterations,
+    kMaxTime,
+    kLineSearchFailed,
+    kFactorizationFailed,
+    kInfeasibleStart,  ///< a barrier is +inf at the start: the start is outside the feasible set
+    kNonFinite,
+};
+std::string to_string(AssemblyStop stop);
+
+/// The schedule, Hessian modification and termination, with the paper's constants (4.4).
+struct AssemblyEngineOptions {
+    double lambda_min = 1e3;
+    double lambda_max = 1e16;
+    /// E~_assembly below which the simplices count as assembled.
+    double assembly_tolerance = 1e-12;
+    /// Relative change of E within a step below which E has converged (0 = never).
+    double energy_tolerance = 1e-8;
+    int max_iterations = 200;
+    double max_time_seconds = kInfinity;
+    /// Per-element Hessian projection (DESIGN.md: clamping converged in fewer iterations than
+    /// the paper's shift, kShift).
+    ProjectionMode projection = ProjectionMode::kClamp;
+    double projection_epsilon = 1e-8;
+    /// Hessian-only shift on the translations, times lambda (the paper's 1e-6; 0 = none).
+    double translation_shift = 0.0;
+    LinearSolverType linear_solver = LinearSolverType::kAuto;
+    int num_threads = 0;  ///< 0 = all cores; results do not depend on it
+
+    /// Throws InvalidArgumentError naming the first bad field and its value.
+    void validate() const;
+};
+
+}  // namespace sa

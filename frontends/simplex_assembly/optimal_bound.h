@@ -1,0 +1,50 @@
+#pragma once
+// The optimal bound (the paper's 5.1, "Optimal bound"): rounds of the mesh driver, each starting
+// from the previous round's verified result and taking its largest distortion as the new bound,
+// until a round lowers no bound by more than a share `tolerance` of it, or does not verify.
+//
+// Every bound of the problem takes part, each lowered to its own largest distortion: the options'
+// built-in barrier (options.bound, in options.distortion's measure; when builtin_energy is set)
+// and every barrier on a distortion among the problem's own energies (MappingProblem::energies,
+// SimplexTerm::with_bound): deformation's conformal and volumetric bounds together, a user's
+// DistortionBarrier. The mapping energy E_m keeps measuring the change from problem.reference
+// (when set) in every round. One loop for parameterization, deformation and PolyCube.
+
+#include <vector>
+
+#include "frontends/simplex_assembly/simplex_assembly.h"
+
+namespace sa {
+
+struct BoundRound {
+    double bound = kInfinity;     ///< K of the built-in barrier for this round
+    double max_distortion = 0.0;  ///< of its result, in the built-in barrier's measure
+    /// The problem's own barriers on a distortion: their bound this round and their largest
+    /// distortion on its result.
+    std::vector<BoundCheck> bounds;
+    bool success = false;  ///< verified and within every bound
+    int iterations = 0;    ///< assembly and vertex stage
+    double time = 0.0;
+};
+
+struct OptimalBoundOptions {
+    /// Rounds at most (>= 1; 1 = a single solve with the given bounds).
+    int rounds = 10;
+    /// A round must lower some bound by more than this share of it to go on.
+    double tolerance = 1e-3;
+};
+
+struct OptimalBound {
+    /// The last round that verified within its bounds, or the first round when none did.
+    SimplexAssemblyResult solve;
+    bool verified = false;  ///< some round verified within its bounds
+    std::vector<BoundRound> rounds;
+    MapQuality initial_quality;  ///< of the problem's initial map (the first round's)
+};
+
+/// Runs the rounds on `problem` (its initial map starts the first round) with `options`.
+OptimalBound optimal_bound(MappingProblem problem, SimplexAssemblyOptions options,
+                           const OptimalBoundOptions& rounds,
+                           const SimplexAssemblyObserver& observer = {});
+
+}  // namespace sa
