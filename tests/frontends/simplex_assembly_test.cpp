@@ -7,27 +7,10 @@
 #include "geometry/handle_feasibility.h"
 #include "geometry/mesh_generators.h"
 #include "geometry/mesh_topology.h"
+#include "tests/frontends/scrambled_problem.h"
 
 namespace sa {
 namespace {
-
-// The boundary stays (the handles), interior vertices are scattered: many inverted simplices.
-MappingProblem scrambled(const SimplicialMesh& mesh, double amount, unsigned seed) {
-    MappingProblem p;
-    p.mesh = mesh;
-    p.initial = mesh.vertices;
-    const MeshTopology t = mesh_topology(mesh, "generated");
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-amount, amount);
-    for (Index v = 0; v < mesh.num_vertices(); ++v) {
-        if (t.boundary_vertex[v]) {
-            p.handles.push_back(v);
-        } else {
-            for (int c = 0; c < mesh.vertices.cols(); ++c) p.initial(v, c) += u(rng);
-        }
-    }
-    return p;
-}
 
 void expect_verified(const SimplexAssemblyResult& r, const MappingProblem& p) {
     EXPECT_TRUE(r.success) << r.message;

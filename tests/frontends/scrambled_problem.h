@@ -1,0 +1,31 @@
+#pragma once
+// A fixed-boundary test problem with many inverted simplices, generated from any mesh.
+
+#include <random>
+
+#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "geometry/mesh_topology.h"
+
+namespace sa {
+
+/// `mesh` with its boundary vertices as handles at their rest positions and every interior
+/// vertex moved by a uniform offset in [-amount, amount] per coordinate (seeded): a feasible
+/// problem whose initial map inverts many simplices.
+inline MappingProblem scrambled(const SimplicialMesh& mesh, double amount, unsigned seed) {
+    MappingProblem p;
+    p.mesh = mesh;
+    p.initial = mesh.vertices;
+    const MeshTopology t = mesh_topology(mesh, "generated");
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-amount, amount);
+    for (Index v = 0; v < mesh.num_vertices(); ++v) {
+        if (t.boundary_vertex[v]) {
+            p.handles.push_back(v);
+        } else {
+            for (int c = 0; c < mesh.vertices.cols(); ++c) p.initial(v, c) += u(rng);
+        }
+    }
+    return p;
+}
+
+}  // namespace sa
