@@ -12,6 +12,7 @@
 #include "geometry/mesh_generators.h"
 #include "geometry/mesh_topology.h"
 #include "geometry/rest_frames.h"
+#include "tests/frontends/user_conformal.h"
 
 namespace sa {
 namespace {
@@ -86,20 +87,6 @@ struct Scrambled {
                                  std::move(elements));
     }
     Vec<D> rest(Index v) const { return mesh.vertices.row(v).head(D).transpose(); }
-};
-
-/// The conformal distortion written as a user would, once over the scalar type.
-template <int D>
-struct UserConformal {
-    static constexpr bool rotation_invariant = true;
-    template <class T>
-    T operator()(const Eigen::Matrix<T, D, D>& A) const {
-        if constexpr (D == 2) {
-            return A.squaredNorm() / (2.0 * A.determinant());
-        } else {
-            return (A.squaredNorm() * A.inverse().squaredNorm() - 1.0) / 8.0;
-        }
-    }
 };
 
 template <int D>

@@ -11,23 +11,10 @@
 #include "geometry/mesh_topology.h"
 #include "optim/errors.h"
 #include "tests/frontends/scrambled_problem.h"
+#include "tests/frontends/user_conformal.h"
 
 namespace sa {
 namespace {
-
-/// The conformal distortion as a user writes it.
-template <int D>
-struct UserConformal {
-    static constexpr bool rotation_invariant = true;
-    template <class T>
-    T operator()(const Eigen::Matrix<T, D, D>& A) const {
-        if constexpr (D == 2) {
-            return A.squaredNorm() / (2.0 * A.determinant());
-        } else {
-            return (A.squaredNorm() * A.inverse().squaredNorm() - 1.0) / 8.0;
-        }
-    }
-};
 
 template <int D>
 std::shared_ptr<const SimplexTerm<D>> volumetric_barrier(double bound) {
