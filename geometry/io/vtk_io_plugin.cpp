@@ -292,28 +292,42 @@ bool is_integer(std::string_view token) {
     return true;
 }
 
+/// Whether `token` names the keyword `keyword` (lower case) as VTK's legacy reader sees it: VTK
+/// lowercases what it reads and compares only the keyword's length (`strncmp`), so that
+/// `POLyGONS` and `polygonsX` are both its POLYGONS.
+bool is_vtk_keyword(std::string_view token, std::string_view keyword) {
+    if (token.size() < keyword.size()) return false;
+    for (std::size_t i = 0; i < keyword.size(); ++i) {
+        if (std::tolower(static_cast<unsigned char>(token[i])) != keyword[i]) return false;
+    }
+    return true;
+}
+
 /// The cell sections of an ASCII legacy file (VERTICES, LINES, POLYGONS, TRIANGLE_STRIPS, CELLS,
-/// in the classic `n size` layout or 5.x's OFFSETS/CONNECTIVITY, and CELL_TYPES), checked before
-/// VTK reads them: VTK 9.1's reader dereferences a null string when such a section is cut short or
-/// holds a non-number (a crash found by fuzzing). Each section must hold as many integers as it
-/// declares; the scan stops at POINT_DATA or CELL_DATA (names there are free text). Binary legacy
-/// files are left to VTK.
+/// in the classic `n size` layout before version 5 and 5.x's OFFSETS/CONNECTIVITY from version 5
+/// on, and CELL_TYPES), checked before VTK reads them: VTK 9.1's reader dereferences a null string
+/// when such a section is cut short or holds a non-number (a crash found by fuzzing). Each section
+/// must hold as many integers as it declares. Keywords, the file type and the version are read
+/// as VTK reads them (is_vtk_keyword; the type is the first word after the title line, the
+/// version `%d.%d` after `# vtk DataFile Version`, 0 when there is none), so that no spelling VTK
+/// accepts escapes the check. The scan stops at POINT_DATA or CELL_DATA (names there are free
+/// text). Binary legacy files are left to VTK.
 void check_legacy_cells(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
+    std::string version_line, title, format;
+    std::getline(in, version_line);
+    std::getline(in, title);
+    in >> format;
+    if (!is_vtk_keyword(format, "ascii")) return;
+    int major = 0, minor = 0;
+    const std::string_view prefix = "# vtk DataFile Version";
+    if (version_line.size() < prefix.size() ||
+        std::sscanf(version_line.c_str() + prefix.size(), "%d.%d", &major, &minor) != 2)
+        major = 0;
+    const bool offsets_layout = major >= 5;
     std::vector<std::string> tokens;
-    bool ascii = false;
-    std::string line;
-    for (int number = 1; number <= 3 && std::getline(in, line); ++number) {
-        if (number == 3) {
-            std::istringstream words(line);
-            std::string format;
-            words >> format;
-            ascii = format == "ASCII";
-        }
-    }
-    if (!ascii) return;
     for (std::string token; in >> token;) {
-        if (token == "POINT_DATA" || token == "CELL_DATA") break;
+        if (is_vtk_keyword(token, "point_data") || is_vtk_keyword(token, "cell_data")) break;
         tokens.push_back(std::move(token));
     }
     const auto fail = [&](const std::string& section, const std::string& what) {
@@ -321,7 +335,8 @@ void check_legacy_cells(const std::string& path) {
     };
     // Requires `count` integers from tokens[i] on; returns the index after them.
     const auto integers = [&](std::size_t i, long long count, const std::string& section) {
-        if (count < 0 || static_cast<unsigned long long>(count) > tokens.size() - i)
+        if (count < 0 || i > tokens.size() ||
+            static_cast<unsigned long long>(count) > tokens.size() - i)
             fail(section, "is cut short (" + std::to_string(count) + " numbers declared)");
         for (long long k = 0; k < count; ++k, ++i) {
             if (!is_integer(tokens[i]))
@@ -330,29 +345,40 @@ void check_legacy_cells(const std::string& path) {
         }
         return i;
     };
-    static const std::set<std::string> kCellSections = {"VERTICES", "LINES", "POLYGONS",
-                                                        "TRIANGLE_STRIPS", "CELLS"};
+    // A count as VTK reads it: a whole number that fits.
+    const auto count_at = [&](std::size_t i, const std::string& section, const char* what) {
+        if (i >= tokens.size() || !is_integer(tokens[i]) || tokens[i].size() > 18)
+            fail(section, std::string("has no ") + what);
+        return std::stoll(tokens[i]);
+    };
+    static const char* const kCellSections[] = {"vertices", "lines", "polygons", "triangle_strips",
+                                                "cells"};
     for (std::size_t i = 0; i < tokens.size();) {
-        const std::string& section = tokens[i];
-        if (section == "CELL_TYPES") {
-            if (i + 1 >= tokens.size() || !is_integer(tokens[i + 1])) fail(section, "has no count");
-            i = integers(i + 2, std::stoll(tokens[i + 1]), section);
-        } else if (kCellSections.count(section) != 0) {
-            if (i + 2 >= tokens.size() || !is_integer(tokens[i + 1]) || !is_integer(tokens[i + 2]))
-                fail(section, "has no 'COUNT SIZE' after its name");
-            const long long cells = std::stoll(tokens[i + 1]), size = std::stoll(tokens[i + 2]);
-            i += 3;
-            if (i < tokens.size() && tokens[i] == "OFFSETS") {
-                i = integers(i + 2, cells, section + " OFFSETS");
-                if (i >= tokens.size() || tokens[i] != "CONNECTIVITY")
-                    fail(section, "has no CONNECTIVITY after its OFFSETS");
-                i = integers(i + 2, size, section + " CONNECTIVITY");
-            } else {
-                i = integers(i, size, section);
-            }
-        } else {
-            ++i;
+        const std::string& token = tokens[i];
+        const std::string section = token.substr(0, 40);
+        if (is_vtk_keyword(token, "cell_types")) {
+            i = integers(i + 2, count_at(i + 1, section, "count"), section);
+            continue;
         }
+        if (std::none_of(std::begin(kCellSections), std::end(kCellSections),
+                         [&](const char* k) { return is_vtk_keyword(token, k); })) {
+            ++i;
+            continue;
+        }
+        const long long cells = count_at(i + 1, section, "'COUNT SIZE' after its name");
+        const long long size = count_at(i + 2, section, "'COUNT SIZE' after its name");
+        i += 3;
+        if (!offsets_layout) {
+            i = integers(i, size, section);
+            continue;
+        }
+        // Version 5: OFFSETS TYPE, `cells` offsets, CONNECTIVITY TYPE, `size` indices.
+        if (i >= tokens.size() || !is_vtk_keyword(tokens[i], "offsets"))
+            fail(section, "has no OFFSETS (a version 5 file)");
+        i = integers(i + 2, cells, section + " OFFSETS");
+        if (i >= tokens.size() || !is_vtk_keyword(tokens[i], "connectivity"))
+            fail(section, "has no CONNECTIVITY after its OFFSETS");
+        i = integers(i + 2, size, section + " CONNECTIVITY");
     }
 }
 
