@@ -292,6 +292,32 @@ bool is_integer(std::string_view token) {
     return true;
 }
 
+/// Whether `token` is a whole decimal number as `std::istream >> double` reads it: a sign, digits
+/// with at most one point, an exponent.
+bool is_decimal_number(std::string_view token) {
+    std::size_t i = !token.empty() && (token[0] == '-' || token[0] == '+') ? 1 : 0;
+    std::size_t digits = 0;
+    bool point = false;
+    for (; i < token.size(); ++i) {
+        if (std::isdigit(static_cast<unsigned char>(token[i])))
+            ++digits;
+        else if (token[i] == '.' && !point)
+            point = true;
+        else
+            break;
+    }
+    if (digits == 0) return false;
+    if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
+        ++i;
+        if (i < token.size() && (token[i] == '-' || token[i] == '+')) ++i;
+        if (i == token.size()) return false;
+        for (; i < token.size(); ++i) {
+            if (!std::isdigit(static_cast<unsigned char>(token[i]))) return false;
+        }
+    }
+    return i == token.size();
+}
+
 /// Whether `token` names the keyword `keyword` (lower case) as VTK's legacy reader sees it: VTK
 /// lowercases what it reads and compares only the keyword's length (`strncmp`), so that
 /// `POLyGONS` and `polygonsX` are both its POLYGONS.
@@ -307,7 +333,8 @@ bool is_vtk_keyword(std::string_view token, std::string_view keyword) {
 /// in the classic `n size` layout before version 5 and 5.x's OFFSETS/CONNECTIVITY from version 5
 /// on, and CELL_TYPES), checked before VTK reads them: VTK 9.1's reader dereferences a null string
 /// when such a section is cut short or holds a non-number (a crash found by fuzzing). Each section
-/// must hold as many integers as it declares. Keywords, the file type and the version are read
+/// must hold as many integers as it declares, and a FIELD section before POINT_DATA and CELL_DATA
+/// as many numbers as its arrays declare. Keywords, the file type and the version are read
 /// as VTK reads them (is_vtk_keyword; the type is the first word after the title line, the
 /// version `%d.%d` after `# vtk DataFile Version`, 0 when there is none), so that no spelling VTK
 /// accepts escapes the check. The scan stops at POINT_DATA or CELL_DATA (names there are free
@@ -353,9 +380,49 @@ void check_legacy_cells(const std::string& path) {
     };
     static const char* const kCellSections[] = {"vertices", "lines", "polygons", "triangle_strips",
                                                 "cells"};
+    // The numeric array types of VTK's ReadArray (string and variant arrays are not read here).
+    static const char* const kNumericTypes[] = {
+        "bit",   "char",         "signed_char", "unsigned_char", "short",        "unsigned_short",
+        "int",   "unsigned_int", "long",        "unsigned_long", "vtktypeint64", "vtktypeuint64",
+        "float", "double",       "vtkidtype"};
     for (std::size_t i = 0; i < tokens.size();) {
         const std::string& token = tokens[i];
         const std::string section = token.substr(0, 40);
+        if (is_vtk_keyword(token, "field")) {
+            // FIELD NAME COUNT, then per array NAME COMPONENTS TUPLES TYPE and its values (or
+            // NULL_ARRAY). VTK 9.1 dereferences the null field data its reader returns for a
+            // malformed one here, before the points (a crash found by fuzzing).
+            const long long arrays = count_at(i + 2, section, "'NAME COUNT' after its name");
+            if (arrays < 0) fail(section, "declares " + std::to_string(arrays) + " arrays");
+            i += 3;
+            for (long long a = 0; a < arrays; ++a) {
+                if (i < tokens.size() && tokens[i] == "NULL_ARRAY") {
+                    ++i;
+                    continue;
+                }
+                const std::string array = section + " array " + std::to_string(a);
+                const long long components = count_at(i + 1, array, "'COMPONENTS TUPLES TYPE'");
+                const long long tuples = count_at(i + 2, array, "'COMPONENTS TUPLES TYPE'");
+                if (i + 3 >= tokens.size() ||
+                    std::none_of(std::begin(kNumericTypes), std::end(kNumericTypes),
+                                 [&](const char* k) { return is_vtk_keyword(tokens[i + 3], k); }))
+                    fail(array, "has no numeric type (a string or variant array, or none)");
+                if (components < 1 || tuples < 0 || components > (1LL << 31) ||
+                    tuples > (1LL << 31))
+                    fail(array, "declares " + std::to_string(components) + " components and " +
+                                    std::to_string(tuples) + " tuples");
+                i += 4;
+                const long long values = components * tuples;
+                if (static_cast<unsigned long long>(values) > tokens.size() - i)
+                    fail(array, "is cut short (" + std::to_string(values) + " values declared)");
+                for (long long k = 0; k < values; ++k, ++i) {
+                    if (!is_decimal_number(tokens[i]))
+                        fail(array, "holds " + io::quote(tokens[i].substr(0, 40)) +
+                                        " where a number belongs");
+                }
+            }
+            continue;
+        }
         if (is_vtk_keyword(token, "cell_types")) {
             i = integers(i + 2, count_at(i + 1, section, "count"), section);
             continue;

@@ -204,14 +204,31 @@ TEST(VtkIo, CellSectionsAreCheckedHoweverTheirKeywordsAreSpelt) {
                                    "POLYGONS 2 3\nOFFSETS vtktypeint64\n0 3\nCONNECTIVITY "
                                    "vtktypeint64\n0 1 2\n")),
         {"v3offsets.vtk: the POLYGONS section holds 'OFFSETS'"}));
+    // A FIELD section before the points: VTK 9.1 crashed on a malformed one (fuzz_vtk).
+    const std::string field = "FIELD FieldData 2\nTimeValue 1 1 double\n0.5\n";
+    EXPECT_TRUE(throws_input_error(
+        read("field.vtk", poly("3.0", "ASCII", "FIELD FieldData 2\nu92 double0 4 3\n")),
+        {"field.vtk: the FIELD array 0 section has no 'COMPONENTS TUPLES TYPE'"}));
+    EXPECT_TRUE(throws_input_error(
+        read("fieldshort.vtk", poly("3.0", "ASCII", field + "Cycle 1 2 int\n7\n")),
+        {"fieldshort.vtk: the FIELD array 1 section is cut short (2 values declared)"}));
+    EXPECT_TRUE(throws_input_error(
+        read("fieldtext.vtk", poly("3.0", "ASCII", field + "Name 1 1 string\nx\n")),
+        {"fieldtext.vtk: the FIELD array 1 section has no numeric type"}));
+    EXPECT_TRUE(throws_input_error(
+        read("fieldnan.vtk", poly("3.0", "ASCII", field + "Cycle 1 1 float\n1.5e\n")),
+        {"fieldnan.vtk: the FIELD array 1 section holds '1.5e' where a number belongs"}));
     testing::internal::GetCapturedStderr();
-    // The same spellings in a well-formed file are read.
+    // The same spellings, and a FIELD section, in a well-formed file are read.
     for (const auto& [name, content] :
          {std::pair<std::string, std::string>{
               "lower.vtk", poly("3.0", "ascii", "polygons 2 8\n3 0 1 2\n3 0 2 3\n")},
           {"v5.vtk", poly("5.1", "ASCII",
                           "POLYGONS 3 6\nOFFSETS vtktypeint64\n0 3 6\nCONNECTIVITY "
-                          "vtktypeint64\n0 1 2 0 2 3\n")}}) {
+                          "vtktypeint64\n0 1 2 0 2 3\n")},
+          {"fieldok.vtk", poly("3.0", "ASCII",
+                               "FIELD FieldData 2\nTimeValue 1 1 double\n0.5\nCycle 2 1 int\n"
+                               "7 -8\nPOLYGONS 2 8\n3 0 1 2\n3 0 2 3\n")}}) {
         SCOPED_TRACE(name);
         const MeshFile file = read_vtk(folder.write(name, content));
         EXPECT_EQ(file.mesh.simplices.rows(), 2);
