@@ -282,10 +282,10 @@ void check_legacy_header(const std::string& path) {
                          io::quote(first));
 }
 
-/// Whether `token` is a whole decimal integer (an optional sign, then digits only).
+/// Whether `token` is a whole decimal integer (an optional sign, then at most 18 digits).
 bool is_integer(std::string_view token) {
     std::size_t i = !token.empty() && (token[0] == '-' || token[0] == '+') ? 1 : 0;
-    if (i == token.size()) return false;
+    if (i == token.size() || token.size() - i > 18) return false;  // 18 digits fit a long long
     for (; i < token.size(); ++i) {
         if (!std::isdigit(static_cast<unsigned char>(token[i]))) return false;
     }
@@ -436,13 +436,35 @@ void check_legacy_cells(const std::string& path) {
         const long long size = count_at(i + 2, section, "'COUNT SIZE' after its name");
         i += 3;
         if (!offsets_layout) {
+            // `cells` cells, each its point count then its points: `size` numbers in all. VTK
+            // walks them by the counts without checking (a crash found by fuzzing).
+            const std::size_t first = i;
             i = integers(i, size, section);
+            std::size_t k = first;
+            for (long long c = 0; c < cells; ++c) {
+                const long long points = k < i ? std::stoll(tokens[k]) : -1;
+                if (points < 0 || static_cast<unsigned long long>(points) >= i - k)
+                    fail(section, "does not hold " + std::to_string(cells) +
+                                      " cells of 'COUNT POINTS...' in " + std::to_string(size) +
+                                      " numbers");
+                k += static_cast<std::size_t>(points) + 1;
+            }
+            if (k != i) fail(section, "holds more than its " + std::to_string(cells) + " cells");
             continue;
         }
-        // Version 5: OFFSETS TYPE, `cells` offsets, CONNECTIVITY TYPE, `size` indices.
+        // Version 5: OFFSETS TYPE, `cells` offsets, CONNECTIVITY TYPE, `size` indices; the
+        // offsets rise from 0 to `size`.
         if (i >= tokens.size() || !is_vtk_keyword(tokens[i], "offsets"))
             fail(section, "has no OFFSETS (a version 5 file)");
+        const std::size_t first = i + 2;
         i = integers(i + 2, cells, section + " OFFSETS");
+        for (std::size_t k = first; k < i; ++k) {
+            const long long offset = std::stoll(tokens[k]);
+            const long long before = k == first ? 0 : std::stoll(tokens[k - 1]);
+            if (offset < before || offset > size || (k == first && offset != 0) ||
+                (k + 1 == i && offset != size))
+                fail(section + " OFFSETS", "do not rise from 0 to " + std::to_string(size));
+        }
         if (i >= tokens.size() || !is_vtk_keyword(tokens[i], "connectivity"))
             fail(section, "has no CONNECTIVITY after its OFFSETS");
         i = integers(i + 2, size, section + " CONNECTIVITY");

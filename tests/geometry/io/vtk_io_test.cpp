@@ -204,6 +204,18 @@ TEST(VtkIo, CellSectionsAreCheckedHoweverTheirKeywordsAreSpelt) {
                                    "POLYGONS 2 3\nOFFSETS vtktypeint64\n0 3\nCONNECTIVITY "
                                    "vtktypeint64\n0 1 2\n")),
         {"v3offsets.vtk: the POLYGONS section holds 'OFFSETS'"}));
+    // Cells whose point counts disagree with the section's COUNT and SIZE (VTK walks them by
+    // the counts: a crash found by fuzz_vtk), and version 5 offsets that do not rise to SIZE.
+    EXPECT_TRUE(throws_input_error(read("counts.vtk", poly("3.0", "ASCII", "POLYGONS 110 1\n1\n")),
+                                   {"counts.vtk: the POLYGONS section does not hold 110 cells"}));
+    EXPECT_TRUE(throws_input_error(
+        read("extra.vtk", poly("3.0", "ASCII", "POLYGONS 1 8\n3 0 1 2\n3 0 2 3\n")),
+        {"extra.vtk: the POLYGONS section holds more than its 1 cells"}));
+    EXPECT_TRUE(throws_input_error(
+        read("offsets.vtk", poly("5.1", "ASCII",
+                                 "POLYGONS 3 6\nOFFSETS vtktypeint64\n0 4 3\nCONNECTIVITY "
+                                 "vtktypeint64\n0 1 2 0 2 3\n")),
+        {"offsets.vtk: the POLYGONS OFFSETS section do not rise from 0 to 6"}));
     // A FIELD section before the points: VTK 9.1 crashed on a malformed one (fuzz_vtk).
     const std::string field = "FIELD FieldData 2\nTimeValue 1 1 double\n0.5\n";
     EXPECT_TRUE(throws_input_error(
