@@ -30,7 +30,7 @@ struct ParameterizationOptions {
     /// the first in the submesh mode unless solver.mode is kFull or free_boundary_injective is set.
     int optimal_bound_rounds = 0;
     /// The optimal bound stops when a round lowers the largest distortion by less than this share.
-    double optimal_bound_tolerance = 1e-4;
+    double optimal_bound_tolerance = 5e-4;
     /// The submesh mode's rounds solve regions around every simplex whose distortion is within
     /// this share of the bound (OptimalBoundOptions::submesh_band).
     double optimal_bound_band = 0.5;

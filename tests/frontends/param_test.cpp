@@ -138,7 +138,7 @@ TEST(Parameterization, SubmeshOptimalBoundReachesTheFullModesBound) {
     EXPECT_GT(r[1].solve.submesh.start_near_bound, 0);
     EXPECT_GE(r[1].rounds.size(), 3u);
     // Each submesh round leaves most of the map as it was, yet the bound reached is the full
-    // mode's (within a small tolerance: both stop at a share 1e-4 of improvement per round).
+    // mode's (within a small tolerance: both stop at the same share of improvement per round).
     EXPECT_LT(r[1].reached_bound - 1.0, (r[0].reached_bound - 1.0) * 1.02)
         << "full " << r[0].reached_bound << ", submesh " << r[1].reached_bound;
     EXPECT_LT(r[1].reached_bound, r[1].rounds[1].max_distortion);
