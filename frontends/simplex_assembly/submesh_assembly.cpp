@@ -133,8 +133,8 @@ SolveMode choose_mode(const PreparedProblem<D>& p, const SimplexAssemblyOptions&
     if (bad <= options.auto_bad_share) return SolveMode::kSubmesh;
     // A fixed boundary around a widespread tangle: the submesh start untangles it in vertex
     // variables (untangle.h) in a few Newton steps on #V x D unknowns, where the full solve's
-    // (D + 1) D per simplex couple through the assembly (a 30k-tet hand, 28% inverted: 8-10 s
-    // per full iteration, no map at 120 s; the submesh mode verified it in 2 s).
+    // (D + 1) D per simplex couple through the assembly (a 30k-tet hand with 28% of its tets
+    // inverted found no map in the full solve; BENCHMARKS.md, issue 19).
     return boundary_fixed(p) ? SolveMode::kSubmesh : SolveMode::kFull;
 }
 
