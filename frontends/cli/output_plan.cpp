@@ -223,6 +223,8 @@ void OutputPlan::remove_outputs() const {
         std::string temporary = ".";
         temporary.append(s.filename().string()).append(".tmp-").append(std::to_string(getpid()));
         fs::remove(s.parent_path() / temporary, error);
+        // check()'s probe, when the run was interrupted between its creation and removal.
+        fs::remove(folder_of(f.path) / (".sa-probe-" + std::to_string(getpid())), error);
     }
     for (const Folder& f : folders_) {
         if (!f.opened) continue;
