@@ -6,13 +6,17 @@
 //       --deformation twist --amount 1.5 --noise 1.0 --seed 1 --out hand-twist.txt
 //   bench_generate_problem --kind slabs --grid 24 24 64 --deformation twist --amount 3.14 \
 //       --slab 0.05 --out bar-twist.txt
+//   bench_generate_problem --grid 40 160 --deformation bend --amount 2 --noise 1 --out strip.txt
+//       (two numbers: a planar rectangle of square cells, two triangles each; bend only)
 //
 // Prints one line: vertices, simplices, handles, inverted simplices of the initial map.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <type_traits>
 
 #include "geometry/generated_problems.h"
 #include "geometry/io/mesh_file.h"
@@ -30,7 +34,9 @@ int main(int argc, char** argv) {
     app.add_option("--kind", kind, "fixed-boundary or slabs")
         ->check(CLI::IsMember({"fixed-boundary", "slabs"}));
     app.add_option("--mesh", mesh_path, "a tetrahedral mesh (any format sa reads)");
-    app.add_option("--grid", grid, "nx ny nz: a box of Kuhn-cut cubes instead")->expected(3);
+    app.add_option("--grid", grid,
+                   "nx ny nz: a box of Kuhn-cut cubes instead; nx ny: a planar rectangle")
+        ->expected(2, 3);
     app.add_option("--deformation", deformation, "twist or bend")
         ->check(CLI::IsMember({"twist", "bend"}));
     app.add_option("--amount", amount, "radians");
@@ -44,6 +50,11 @@ int main(int argc, char** argv) {
         sa::SimplicialMesh rest;
         if (grid.size() == 3) {
             rest = sa::grid_tetrahedra(grid[0], grid[1], grid[2]);
+        } else if (grid.size() == 2) {
+            rest = sa::grid_triangles(grid[0], grid[1]);  // the unit square: make cells square
+            const double n = std::max(grid[0], grid[1]);
+            rest.vertices.col(0) *= grid[0] / n;
+            rest.vertices.col(1) *= grid[1] / n;
         } else if (!mesh_path.empty()) {
             rest = sa::read_mesh_file(mesh_path).mesh;
         } else {
@@ -74,9 +85,15 @@ int main(int argc, char** argv) {
         f << p.handles.size() << '\n';
         for (sa::Index h : p.handles) f << h << '\n';
         if (!f) throw sa::InputError(out + ": cannot write");
-        const sa::RestFrames<3> frames = sa::rest_frames<3>(p.rest);
-        const sa::MapQuality q =
-            sa::map_quality<3>(sa::linear_parts<3>(p.rest, frames, p.initial), frames.volume);
+        auto quality = [&](auto dimension) {
+            constexpr int D = decltype(dimension)::value;
+            const sa::RestFrames<D> frames = sa::rest_frames<D>(p.rest);
+            return sa::map_quality<D>(sa::linear_parts<D>(p.rest, frames, p.initial),
+                                      frames.volume);
+        };
+        const sa::MapQuality q = p.rest.simplices.cols() == 3
+                                     ? quality(std::integral_constant<int, 2>())
+                                     : quality(std::integral_constant<int, 3>());
         std::printf("%ld vertices, %ld simplices, %zu handles, %ld inverted in the initial map\n",
                     long(p.rest.num_vertices()), long(p.rest.num_simplices()), p.handles.size(),
                     long(q.inverted));

@@ -4,9 +4,9 @@
 handle at a twisted or bent, optionally flattened position, the interior tangled by a Tutte solve
 and seeded noise) and checks every result with ../shared/tools/check_map.py.
 
-Variations: meshes (generated boxes and the tetrahedral meshes of ../shared/data/tet),
-deformation (twist, bend), amount, flattening and noise seed, drawn from a seeded generator so
-that a run is reproducible. Prints one line per problem and a summary (verified / failed,
+Variations: meshes (generated boxes, planar rectangles and the tetrahedral meshes of
+../shared/data/tet), deformation (twist, bend; planar: bend only), amount, flattening and noise
+seed, drawn from a seeded generator so that a run is reproducible. Prints one line per problem and a summary (verified / failed,
 median and largest wall time).
 
   python3 bench/hard_class_variations.py [--count 30] [--seed 7] [--timeout 60] [--meshes ...]
@@ -34,7 +34,8 @@ def main():
     ap.add_argument('--seed', type=int, default=7)
     ap.add_argument('--timeout', type=float, default=60.0, help='seconds per sa run (--max-time)')
     ap.add_argument('--meshes', default='grid,octopus-low,decimated-knight,hand',
-                    help='grid and/or names of ../shared/data/tet/*.mesh')
+                    help='grid (a box of tets), grid2d (a rectangle of triangles) and/or names of '
+                    '../shared/data/tet/*.mesh')
     a = ap.parse_args()
     rng = random.Random(a.seed)
     meshes = a.meshes.split(',')
@@ -42,7 +43,7 @@ def main():
     rows = []
     for i in range(a.count):
         mesh = rng.choice(meshes)
-        deformation = rng.choice(['twist', 'bend'])
+        deformation = rng.choice(['twist', 'bend']) if mesh != 'grid2d' else 'bend'
         amount = round(rng.uniform(0.5, 2.0), 3)
         flatten = rng.choice([1.0, 1.0, 0.2, 0.05, 0.02])
         noise = round(rng.uniform(0.3, 1.5), 3)
@@ -51,6 +52,10 @@ def main():
             dims = [rng.randint(3, 8), rng.randint(3, 8), rng.randint(6, 20)]
             source = ['--grid'] + [str(d) for d in dims]
             label = 'grid-%dx%dx%d' % tuple(dims)
+        elif mesh == 'grid2d':
+            dims = [rng.randint(10, 120), rng.randint(40, 300)]
+            source = ['--grid'] + [str(d) for d in dims]
+            label = 'grid2d-%dx%d' % tuple(dims)
         else:
             source = ['--mesh', os.path.join(a.data, 'tet', mesh + '.mesh')]
             label = mesh
@@ -64,7 +69,7 @@ def main():
         if g.returncode != 0:
             print('%-60s generator refused: %s' % (name, g.stderr.strip()[-120:]), flush=True)
             continue
-        out, report = path + '.node', path + '.json'
+        out, report = path + ('.obj' if mesh == 'grid2d' else '.node'), path + '.json'
         t = time.time()
         r = subprocess.run([a.sa, 'map', '--rest', path, '--out', out, '--report', report,
                             '--force', '--quiet', '--max-time', repr(a.timeout)],
@@ -88,7 +93,7 @@ def main():
         extra = ''
         if rep.get('fallback'):
             extra = ' fallback'
-        print('%-60s %5s tets %5s inverted  %-12s %6.2f s  %s%s' % (
+        print('%-60s %6s simplices %6s inverted  %-12s %6.2f s  %s%s' % (
             name, rep.get('input', {}).get('simplices'), before, rep.get('mode', '-'), wall, status,
             extra), flush=True)
     verified = [r for r in rows if r[1] == 'verified']

@@ -96,7 +96,8 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
     map->add_option("--record", a.record,
                     "folder for a ParaView time series of the assembly (assembly.pvd)");
     map->add_option("--mode", a.mode,
-                    "auto (submeshes for large meshes with few bad simplices), full or submesh")
+                    "auto (submeshes for large meshes with few bad simplices or a fixed boundary), "
+                    "full or submesh")
         ->capture_default_str();
     map->add_option("--rings", a.rings, "submesh mode: rings around the bad simplices (m)")
         ->check(integer_at_least(1))

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -74,7 +75,16 @@ void OutputPlan::input(const std::string& option, const std::string& path) {
 }
 
 void OutputPlan::file(const std::string& option, const std::string& path) {
-    if (!path.empty()) files_.push_back({option, path});
+    if (path.empty()) return;
+    files_.push_back({option, path});
+    // A TetGen output is two files (geometry/io/tetgen_io.h): the writer puts the other one next
+    // to the staged name, so it is checked, renamed and rolled back with it.
+    std::string extension = fs::path(path).extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (extension == ".node" || extension == ".ele")
+        files_.push_back(
+            {option,
+             fs::path(path).replace_extension(extension == ".node" ? ".ele" : ".node").string()});
 }
 
 void OutputPlan::folder(const std::string& option, const std::string& path,
@@ -213,6 +223,8 @@ void OutputPlan::remove_outputs() const {
         std::string temporary = ".";
         temporary.append(s.filename().string()).append(".tmp-").append(std::to_string(getpid()));
         fs::remove(s.parent_path() / temporary, error);
+        // check()'s probe, when the run was interrupted between its creation and removal.
+        fs::remove(folder_of(f.path) / (".sa-probe-" + std::to_string(getpid())), error);
     }
     for (const Folder& f : folders_) {
         if (!f.opened) continue;

@@ -40,7 +40,8 @@ class OutputPlan {
 
     /// An input file, which no output may name. Empty paths are ignored.
     void input(const std::string& option, const std::string& path);
-    /// An output file. Empty paths are ignored.
+    /// An output file. Empty paths are ignored. A .node or .ele file brings its TetGen
+    /// companion (the same name with the other extension), which the writer also writes.
     void file(const std::string& option, const std::string& path);
     /// An output folder (created when missing, with its parents). Without --force, none of the
     /// files named in `marks` may exist in it (they mark an earlier run). Empty paths are ignored.

@@ -129,7 +129,12 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
         }
         return prepared.to_original(corners);
     };
-    AssemblyEngineOptions schedule = engine_options(with_time_left(options, budget));
+    // With a time limit, a run whose assembly goes nowhere must leave time for the untangling
+    // fallback (untangle_fallback.h): the assembly takes at most half of what is left.
+    SimplexAssemblyOptions assembly_options = with_time_left(options, budget);
+    if (options.untangle_fallback && std::isfinite(options.max_time_seconds))
+        assembly_options.max_time_seconds *= 0.5;
+    AssemblyEngineOptions schedule = engine_options(assembly_options);
     // The 1e-6 lambda shift is meant for r-SA's few, possibly redundant translations (DESIGN.md).
     if (options.variant != Variant::kReduced) schedule.translation_shift = 0.0;
     Eigen::MatrixXd handover;  // the feasible recovered mesh that ended the assembly, if any

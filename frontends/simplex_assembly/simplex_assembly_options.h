@@ -126,7 +126,8 @@ struct SimplexAssemblyOptions {
     /// kAuto takes the full solve for meshes of at most this many triangles or tetrahedra (a
     /// tetrahedron's 9 variables couple with its 4 neighbours: the full 3D system costs far more),
     /// and for meshes whose initial map has more than `auto_bad_share` inverted or degenerate
-    /// simplices; the submesh mode otherwise.
+    /// simplices unless every boundary vertex is a handle (the submesh mode's start untangles a
+    /// fixed boundary's interior in vertex variables); the submesh mode otherwise.
     /// A run that ends without a valid map, its handles in place and time left, is untangled in
     /// vertex variables and finished by the vertex stage (untangle_fallback.h). Front-ends with a
     /// last resort of their own (param's Tutte start, start_fallback.h) turn it off.

@@ -31,6 +31,21 @@ std::vector<Index> bad_simplices_at(const PreparedProblem<D>& p, const Eigen::Ma
         beyond_cap_allowed);
 }
 
+/// Every boundary vertex of the mesh is a handle (and there is one): the Locally Injective
+/// Mappings benchmark's class, where the interior is to be untangled inside a fixed boundary.
+template <int D>
+bool boundary_fixed(const PreparedProblem<D>& p) {
+    std::vector<unsigned char> handle(p.mesh.num_vertices(), 0);
+    for (Index h : p.input->handles) handle[h] = 1;
+    bool any = false;
+    for (Index v = 0; v < p.mesh.num_vertices(); ++v) {
+        if (!p.topology.used_vertex[v] || !p.topology.boundary_vertex[v]) continue;
+        if (!handle[v]) return false;
+        any = true;
+    }
+    return any;
+}
+
 struct Region {
     std::vector<Index> simplices;
     int rings = 0;
@@ -115,7 +130,12 @@ SolveMode choose_mode(const PreparedProblem<D>& p, const SimplexAssemblyOptions&
         return SolveMode::kFull;
     const double bad =
         double(p.initial_quality.inverted + p.initial_quality.degenerate) / double(n);
-    return bad > options.auto_bad_share ? SolveMode::kFull : SolveMode::kSubmesh;
+    if (bad <= options.auto_bad_share) return SolveMode::kSubmesh;
+    // A fixed boundary around a widespread tangle: the submesh start untangles it in vertex
+    // variables (untangle.h) in a few Newton steps on #V x D unknowns, where the full solve's
+    // (D + 1) D per simplex couple through the assembly (a 30k-tet hand with 28% of its tets
+    // inverted found no map in the full solve; BENCHMARKS.md, issue 19).
+    return boundary_fixed(p) ? SolveMode::kSubmesh : SolveMode::kFull;
 }
 
 template <int D>

@@ -169,6 +169,26 @@ TEST_F(SaCommand, ExistingOutputsAreKeptWithoutForce) {
     EXPECT_NE(read(path("mine.vtu")), "precious");
 }
 
+TEST_F(SaCommand, TetgenOutputWritesBothFilesOrNone) {
+    const SimplicialMesh box = grid_tetrahedra(2, 2, 2);
+    write_mesh_file(path("box.mesh"), box.vertices, box.simplices);
+    const std::string box_problem = path("box.mesh") + " --init " + path("box.mesh");
+    const Outcome r = sa("map --rest " + box_problem + " --out " + path("out.node") + " --quiet");
+    ASSERT_EQ(r.status, 0) << r.out << r.err;
+    // The .ele written next to the .node is renamed into place with it, nothing left hidden.
+    EXPECT_TRUE(fs::exists(path("out.ele")));
+    EXPECT_EQ(read_mesh_file(path("out.node")).mesh.num_simplices(), box.num_simplices());
+    for (const auto& entry : fs::directory_iterator(dir_))
+        EXPECT_NE(entry.path().filename().string().front(), '.') << entry.path();
+
+    // An existing .ele is the other half of the output: kept without --force.
+    fs::remove(path("out.node"));
+    std::ofstream(path("out.ele"), std::ios::trunc) << "precious";
+    EXPECT_EQ(sa("map --rest " + box_problem + " --out " + path("out.node")).status, 2);
+    EXPECT_EQ(read(path("out.ele")), "precious");
+    EXPECT_FALSE(fs::exists(path("out.node")));
+}
+
 TEST_F(SaCommand, DemoRepairsTheFoldedHarmonicMap) {
     const Outcome r = sa("demo --size 10 --quiet --out-dir " + path("demo"));
     ASSERT_EQ(r.status, 0) << r.out << r.err;

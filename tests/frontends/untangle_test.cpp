@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include "frontends/simplex_assembly/prepared_problem.h"
 #include "frontends/simplex_assembly/simplex_assembly.h"
+#include "frontends/simplex_assembly/submesh_assembly.h"
 #include "geometry/generated_problems.h"
 #include "geometry/map_quality.h"
 #include "geometry/mesh_generators.h"
@@ -16,9 +18,10 @@
 namespace sa {
 namespace {
 
+template <int D = 3>
 MapQuality quality(const SimplicialMesh& rest, const Eigen::MatrixXd& map) {
-    const RestFrames<3> frames = rest_frames<3>(rest);
-    return map_quality<3>(linear_parts<3>(rest, frames, map), frames.volume);
+    const RestFrames<D> frames = rest_frames<D>(rest);
+    return map_quality<D>(linear_parts<D>(rest, frames, map), frames.volume);
 }
 
 MappingProblem mapping_problem(const GeneratedProblem& g) {
@@ -93,6 +96,41 @@ TEST(HardFixedBoundaryClass, UntilValidStopsAtAnUntangledMap) {
     const SimplexAssemblyResult r = run_simplex_assembly(mapping_problem(g), options);
     EXPECT_TRUE(r.success) << r.message;
     EXPECT_EQ(quality(g.rest, r.positions).inverted, 0);
+}
+
+// A widespread tangle (over options.auto_bad_share of the simplices inverted) inside a fixed
+// boundary whose handles force nothing beyond lambda_max: the auto mode takes the submesh mode,
+// whose start untangles it, in 3D and in 2D; with one boundary vertex free, the full solve.
+TEST(HardFixedBoundaryClass, AutoUntanglesAWidespreadTangleInsideAFixedBoundary) {
+    const GeneratedProblem g = fixed_boundary_problem(grid_tetrahedra(5, 5, 12),
+                                                      GeneratedDeformation::kTwist, 1.0, 2.0, 1);
+    const SimplexAssemblyOptions defaults;
+    ASSERT_GT(double(quality(g.rest, g.initial).inverted),
+              defaults.auto_bad_share * double(g.rest.num_simplices()));
+    ASSERT_GT(g.rest.num_simplices(), defaults.auto_full_tetrahedra);
+    const SimplexAssemblyResult r = run_simplex_assembly(mapping_problem(g), defaults);
+    EXPECT_EQ(r.mode, SolveMode::kSubmesh);
+    EXPECT_TRUE(r.success) << r.message;
+    const MapQuality q = quality(g.rest, r.positions);
+    EXPECT_EQ(q.inverted + q.degenerate, 0) << r.message;
+
+    MappingProblem one_free = mapping_problem(g);
+    one_free.handles.erase(one_free.handles.begin());
+    StageTimes times;
+    const auto prepared = prepare_problem<3>(one_free, defaults, times);
+    EXPECT_EQ(choose_mode<3>(*prepared, defaults), SolveMode::kFull);
+
+    const GeneratedProblem planar =
+        fixed_boundary_problem(grid_triangles(40, 80), GeneratedDeformation::kBend, 1.0, 1.5, 1);
+    SimplexAssemblyOptions options;
+    options.auto_full_triangles = 1000;  // the 6,400 triangles count as large
+    ASSERT_GT(double(quality<2>(planar.rest, planar.initial).inverted),
+              options.auto_bad_share * double(planar.rest.num_simplices()));
+    const SimplexAssemblyResult r2 = run_simplex_assembly(mapping_problem(planar), options);
+    EXPECT_EQ(r2.mode, SolveMode::kSubmesh);
+    EXPECT_TRUE(r2.success) << r2.message;
+    const MapQuality q2 = quality<2>(planar.rest, r2.positions);
+    EXPECT_EQ(q2.inverted + q2.degenerate, 0) << r2.message;
 }
 
 // A full solve that cannot assemble (--mode full on the class) ends verified through the
