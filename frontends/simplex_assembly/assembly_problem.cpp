@@ -46,7 +46,17 @@ AssemblyProblem<D>::AssemblyProblem(const AssemblyInput<D>& in,
         build_full(in);
     }
     add_energies_and_constraints(in);
-    for (Index s : in.anchored_simplices) engine_->fix_simplex(s);
+    // A plugin whose terms fix the rigid motion (PolyCube's axis-aligned planes) would conflict
+    // with an anchor's fixed linear part: the anchors then keep their translations only.
+    bool plugins_fix_motion = false;
+    for (const auto& plugin : in.plugins) plugins_fix_motion |= plugin->removes_rigid_motion();
+    for (Index s : in.anchored_simplices) {
+        if (!plugins_fix_motion || variant_ == Variant::kVertex) {
+            engine_->fix_simplex(s);
+        } else if (engine_->has_translation(s)) {
+            for (Index v : engine_->translation_variables(s)) engine_->problem().set_fixed(v);
+        }
+    }
 }
 
 template <int D>
@@ -74,6 +84,7 @@ void AssemblyProblem<D>::add_energies_and_constraints(const AssemblyInput<D>& in
         }
         engine_->template add_linear_part_constraints<1>("edge constraints", rows);
     }
+    for (const auto& plugin : in.plugins) plugin->add_assembly_terms(*engine_, in.plugin_stage);
 }
 
 template <int D>
