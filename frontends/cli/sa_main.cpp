@@ -127,6 +127,14 @@ int run(int argc, char** argv) {
         }
         return report("internal error", e.what(), sa::cli::kExitInternalError);
     } catch (const std::exception& e) {
+        // oneTBB reports a worker it cannot start as a std::runtime_error
+        // "pthread_create has failed: Resource temporarily unavailable" (EAGAIN), not a
+        // system_error: under an address-space limit that is running out of memory too.
+        const std::string what = e.what();
+        if (what.rfind("pthread_create has failed", 0) == 0 && sa::cli::memory_limit() > 0) {
+            return report("error", sa::cli::out_of_memory_message() + " (" + what + ")",
+                          sa::cli::kExitOutOfMemory);
+        }
         return report("internal error", e.what(), sa::cli::kExitInternalError);
     }
     return report("error", "a command is required: " + command_list(app), sa::cli::kExitBadInput);
