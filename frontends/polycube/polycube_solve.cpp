@@ -194,7 +194,13 @@ PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSol
     SimplexAssemblyObserver observer;
     observer.logger = logger;
     if (options.optimal_bound) {
-        OptimalBound rounds = optimal_bound(problem, o, {options.rounds, 1e-3}, observer);
+        OptimalBoundOptions schedule{options.rounds, 1e-3};
+        // A round counts only when its map is a PolyCube (one cut short by the time limit before
+        // the vertex stage is not planar, though the driver finds no inverted tetrahedron).
+        schedule.accept = [&prepared](const SimplexAssemblyResult& r) {
+            return verify_polycube(prepared.layout(), r.positions, prepared.input_volume).passed;
+        };
+        OptimalBound rounds = optimal_bound(problem, o, schedule, observer);
         out.solve = std::move(rounds.solve);
         out.rounds = std::move(rounds.rounds);
         out.bound = out.rounds.front().bound;

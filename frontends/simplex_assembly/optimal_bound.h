@@ -10,6 +10,7 @@
 // DistortionBarrier. The mapping energy E_m keeps measuring the change from problem.reference
 // (when set) in every round. One loop for parameterization, deformation and PolyCube.
 
+#include <functional>
 #include <vector>
 
 #include "frontends/simplex_assembly/simplex_assembly.h"
@@ -32,6 +33,9 @@ struct OptimalBoundOptions {
     int rounds = 10;
     /// A round must lower some bound by more than this share of it to go on.
     double tolerance = 1e-3;
+    /// A front-end's own check of a round's result beyond the driver's verification (PolyCube:
+    /// verify_polycube() on its positions); a round it rejects counts as one that did not verify.
+    std::function<bool(const SimplexAssemblyResult&)> accept;
 };
 
 struct OptimalBound {
