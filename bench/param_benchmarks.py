@@ -15,7 +15,10 @@ surfaces with a one-vertex hole and sliver triangles), from LSCM and from Tutte,
 the fallback to a Tutte start (frontends/param/start_fallback.h); --write puts that table between
 <!-- param-robustness:begin --> and <!-- param-robustness:end -->.
 
-  python3 bench/param_benchmarks.py [--large] [--large-only] [--robustness] [--only NAME] [--timeout 600] [--write BENCHMARKS.md]
+  python3 bench/param_benchmarks.py [--large] [--large-only] [--robustness] [--compare-full] [--only NAME] [--timeout 600] [--write BENCHMARKS.md]
+
+With --compare-full, every shared mesh also runs with the optimal bound's previous default, its
+rounds in the full mode (FULL_ROUNDS).
 
 With --write, the tables replace the section between <!-- param-benchmarks:begin --> and
 <!-- param-benchmarks:end --> of that file (<!-- param-large:... --> with --large-only). Extra arguments after -- go to every `sa param` run.
@@ -82,6 +85,9 @@ def table(rows):
 # The cases of --large (issue 24): (name, mesh in ../shared/data/param, Loop levels, sa param
 # arguments). camel_b's LSCM map folds (9 triangles at the base, more after subdivision), so its
 # submesh runs have regions to repair; camelhead's and face's test the optimal bound at scale.
+# --compare-full: the optimal bound as it was before its rounds ran in the submesh mode.
+FULL_ROUNDS = ['--mode', 'full', '--optimal-bound-rounds', '10', '--optimal-bound-tolerance', '1e-3']
+
 LARGE_CASES = [
     ('camel_b x256', 'camel_b.obj', 4, ['--energy', 'lscm', '--bound', '1.45']),
     ('camel_b x1024', 'camel_b.obj', 5, ['--energy', 'lscm', '--bound', '1.45']),
@@ -237,6 +243,9 @@ def main():
     ap.add_argument('--robustness', action='store_true',
                     help='only golf.obj and generated disks of its class, with and without the '
                          'Tutte fallback')
+    ap.add_argument('--compare-full', action='store_true',
+                    help='also run every mesh with the previous default: the full mode\'s rounds '
+                         '(--mode full --optimal-bound-rounds 10 --optimal-bound-tolerance 1e-3)')
     ap.add_argument('--timeout', type=float, default=600.0, help='seconds per run')
     ap.add_argument('--write', help='markdown file whose param-benchmarks section gets the tables')
     ap.add_argument('extra', nargs='*', help='arguments for every sa param run (after --)')
@@ -256,8 +265,13 @@ def main():
         if a.only and a.only not in name:
             continue
         rows.append(run_param(a, os.path.join(folder, name), ['--optimal-bound'], work, name)[0])
+        if a.compare_full:
+            rows.append(run_param(a, os.path.join(folder, name), ['--optimal-bound'] + FULL_ROUNDS,
+                                  work, name)[0])
+            rows[-1]['name'] = name + ' (full mode)'
     output = '' if a.large_only else ('`sa param --mesh M --optimal-bound` (LSCM start, E_m = area-weighted |A - A0|^2, '
-              'rounds of K = the largest distortion until it stops improving):\n\n' + table(rows))
+              'rounds of K = the largest distortion until it stops improving; "full mode": with `%s`):\n\n'
+              % ' '.join(FULL_ROUNDS) + table(rows))
     if a.large or a.large_only:
         output += '\n' + large_case(a, work)
     print(output)

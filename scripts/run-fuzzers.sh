@@ -4,8 +4,8 @@
 # undefined-behaviour sanitizers (build-sanitized.sh), starting from seeds the project's writers
 # make. A crash, a sanitizer report, a leak, an allocation over 2 GB or an input taking over 25 s
 # fails the run; the input is kept in build-asan/fuzz/artifacts/ (fix the reader, then add it to
-# tests/fuzz/regressions/<target>/). Prints executions and time per target. Not in CI yet
-# (BENCHMARKS.md, "Reliability").
+# tests/fuzz/regressions/<target>/). Prints executions and time per target. CI's third phase
+# (.ci/run; BENCHMARKS.md, "Reliability").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh

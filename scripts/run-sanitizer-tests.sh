@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Sets up, builds with clang and -fsanitize=address,undefined (build-sanitized.sh) and runs tests
 # under the sanitizers: any report (an invalid access, undefined behaviour, a leak) fails its
-# test. With no argument: everything, and the whole test suite through ctest. With arguments: only
-# those test executables (GoogleTest), each run on its own (what CI runs; see BENCHMARKS.md,
-# "Reliability"). Leaks inside third-party libraries are suppressed by name in
+# test. With no argument: everything, and the whole test suite through ctest (CI's second phase,
+# .ci/run; BENCHMARKS.md, "Reliability"). With arguments: only those test executables
+# (GoogleTest), each run on its own. Leaks inside third-party libraries are suppressed by name in
 # tests/sanitizers/lsan.supp, never the project's own.
 set -euo pipefail
 cd "$(dirname "$0")/.."

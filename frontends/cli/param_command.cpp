@@ -53,8 +53,15 @@ CLI::App* add_param_command(CLI::App& app, ParamArguments& a) {
         "rounds that take the largest distortion as the next bound until it stops improving (5.1)");
     param
         ->add_option("--optimal-bound-rounds", a.optimal_bound_rounds,
-                     "most rounds of --optimal-bound (default 10)")
+                     "most rounds of --optimal-bound (default 20)")
         ->check(integer_at_least(1))
+        ->needs("--optimal-bound");
+    param
+        ->add_option("--optimal-bound-tolerance", a.optimal_bound_tolerance,
+                     "--optimal-bound stops when a round lowers the largest distortion by less "
+                     "than this share of it")
+        ->check(CLI::Range(0.0, 0.5))
+        ->capture_default_str()
         ->needs("--optimal-bound");
     param
         ->add_option("--energy", a.energy,
@@ -120,7 +127,8 @@ int run_param_command(const ParamArguments& a) {
     solver.max_time_seconds = a.max_time;
     solver.validate();
     if (a.optimal_bound)
-        options.optimal_bound_rounds = a.optimal_bound_rounds > 0 ? a.optimal_bound_rounds : 10;
+        options.optimal_bound_rounds = a.optimal_bound_rounds > 0 ? a.optimal_bound_rounds : 20;
+    options.optimal_bound_tolerance = a.optimal_bound_tolerance;
     options.free_boundary_injective = a.free_boundary_injective;
     options.fallback = !a.no_fallback;
     const std::string out_ext = extension(a.out);

@@ -120,6 +120,7 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
         report["submesh"] = {
             {"start", m.start},
             {"start_bad", m.start_bad},
+            {"start_near_bound", m.start_near_bound},
             {"start_iterations", m.start_iterations},
             {"start_rejected", m.start_rejected},
             {"start_untangle_iterations", m.start_untangle_iterations},

@@ -5,6 +5,8 @@
 #include "geometry/boundary_fans.h"
 #include "geometry/boundary_loops.h"
 #include "geometry/initial_maps.h"
+#include "geometry/map_quality.h"
+#include "geometry/rest_frames.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
 #include "optim/time_budget.h"
@@ -81,14 +83,28 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
     SimplexAssemblyOptions solver = options.solver;
     // The parameterization's own last resort is the Tutte start below (start_fallback.h).
     solver.untangle_fallback = false;
-    // A submesh round repairs only the simplices at the bound and stalls at the initial map's
-    // maximum (camelhead: delta_con 5.96 against 1.83 in the full mode): the rounds of the optimal
-    // bound move the whole mesh unless the caller forces the submesh mode.
-    if (options.optimal_bound_rounds > 0 && solver.mode == SolveMode::kAuto)
-        solver.mode = SolveMode::kFull;
+    // After the first, the rounds of the optimal bound run in the submesh mode unless the caller
+    // asks for the full mode (or E_theta needs it): each solves regions around the simplices
+    // within optimal_bound_band of the bound, the rest fixed (camelhead.off: delta_con 1.827 in
+    // 0.9 s, against 1.828 in 26-36 s for the full mode's rounds; BENCHMARKS.md).
     OptimalBoundOptions rounds;
     rounds.rounds = std::max(1, options.optimal_bound_rounds);
     rounds.tolerance = options.optimal_bound_tolerance;
+    if (options.optimal_bound_rounds > 0 && solver.mode != SolveMode::kFull &&
+        !options.free_boundary_injective) {
+        rounds.submesh_band = options.optimal_bound_band;
+        // The previous result stays a feasible start: its largest distortion is under the bound.
+        rounds.margin = 1e-6;
+        // A start without foldovers needs no full first round either: the submesh rounds lower
+        // its largest distortions (hand-uv.obj: K 1.040 in 2.4 s, with a full first round 1.038
+        // in 29 s). A folded start is repaired by the mode kAuto chooses.
+        if (solver.mode == SolveMode::kAuto) {
+            const RestFrames<2> frames = rest_frames<2>(mesh);
+            const MapQuality start =
+                map_quality<2>(linear_parts<2>(mesh, frames, result.initial_uv), frames.volume);
+            if (start.inverted == 0 && start.degenerate == 0) solver.mode = SolveMode::kSubmesh;
+        }
+    }
     OptimalBound solved = optimal_bound(problem, with_time_left(solver, budget), rounds, observer);
     result.initial_quality = solved.initial_quality;
     result.rounds = std::move(solved.rounds);

@@ -26,11 +26,14 @@ struct ParameterizationOptions {
     /// The distortion in the barrier (conformal or isometric), E_m and mu; bound, threads, mode.
     /// The driver sets no handles and takes E_m as configured here.
     SimplexAssemblyOptions solver;
-    /// Rounds of the optimal bound: 0 keeps solver.bound; n > 0 runs up to n rounds, in the full
-    /// mode when solver.mode is kAuto (a submesh round stalls at the initial map's maximum).
+    /// Rounds of the optimal bound: 0 keeps solver.bound; n > 0 runs up to n rounds, those after
+    /// the first in the submesh mode unless solver.mode is kFull or free_boundary_injective is set.
     int optimal_bound_rounds = 0;
     /// The optimal bound stops when a round lowers the largest distortion by less than this share.
-    double optimal_bound_tolerance = 1e-3;
+    double optimal_bound_tolerance = 5e-4;
+    /// The submesh mode's rounds solve regions around every simplex whose distortion is within
+    /// this share of the bound (OptimalBoundOptions::submesh_band).
+    double optimal_bound_band = 0.5;
     /// The boundary-angle barrier E_theta (full mode only).
     bool free_boundary_injective = false;
     /// When the first round's result does not verify (or is over the bound), start again from a

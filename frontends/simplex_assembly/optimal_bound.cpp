@@ -31,6 +31,14 @@ OptimalBound optimal_bound(MappingProblem problem, SimplexAssemblyOptions option
         throw InvalidArgumentError("optimal bound: rounds = " + std::to_string(rounds.rounds) +
                                    ": must be >= 1");
     }
+    if (!(rounds.submesh_band >= 0.0 && rounds.submesh_band < 1.0)) {
+        throw InvalidArgumentError("optimal bound: submesh_band = " +
+                                   std::to_string(rounds.submesh_band) + ": must be in [0, 1)");
+    }
+    if (!(rounds.margin >= 0.0 && rounds.margin < 1.0)) {
+        throw InvalidArgumentError("optimal bound: margin = " + std::to_string(rounds.margin) +
+                                   ": must be in [0, 1)");
+    }
     if (!(rounds.tolerance >= 0.0 && rounds.tolerance < 1.0)) {
         throw InvalidArgumentError("optimal bound: tolerance = " +
                                    std::to_string(rounds.tolerance) + ": must be in [0, 1)");
@@ -45,18 +53,23 @@ OptimalBound optimal_bound(MappingProblem problem, SimplexAssemblyOptions option
             // the new bound of its barrier.
             const Verification& previous = result.solve.verification;
             problem.initial = result.solve.positions;
+            if (rounds.submesh_band > 0.0) {
+                options.mode = SolveMode::kSubmesh;
+                options.submesh_band = rounds.submesh_band;
+            }
             std::string bounds;
             if (options.builtin_energy) {
-                options.bound = previous.max_distortion;
+                options.bound = previous.max_distortion * (1.0 + rounds.margin);
                 bounds = "K = " + std::to_string(options.bound);
             }
             std::size_t k = 0;
             for (auto& energy : problem.energies) {
                 // previous.bounds lists the barriers on a distortion in the problem's order.
                 if (!bounds_a_distortion(*energy) || k >= previous.bounds.size()) continue;
-                energy = with_bound(*energy, previous.bounds[k].max_distortion);
-                bounds += (bounds.empty() ? "" : ", ") + energy->name() +
-                          " K = " + std::to_string(previous.bounds[k].max_distortion);
+                const double K = previous.bounds[k].max_distortion * (1.0 + rounds.margin);
+                energy = with_bound(*energy, K);
+                bounds +=
+                    (bounds.empty() ? "" : ", ") + energy->name() + " K = " + std::to_string(K);
                 ++k;
             }
             log_line(observer.logger,

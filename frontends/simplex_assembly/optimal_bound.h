@@ -3,6 +3,9 @@
 // from the previous round's verified result and taking its largest distortion as the new bound,
 // until a round lowers no bound by more than a share `tolerance` of it, or does not verify.
 //
+// With OptimalBoundOptions::submesh_band > 0 the rounds after the first solve regions around the
+// simplices within that band of the bound (the largest distortions), the rest of the map fixed.
+//
 // Every bound of the problem takes part, each lowered to its own largest distortion: the options'
 // built-in barrier (options.bound, in options.distortion's measure; when builtin_energy is set)
 // and every barrier on a distortion among the problem's own energies (MappingProblem::energies,
@@ -33,6 +36,17 @@ struct OptimalBoundOptions {
     int rounds = 10;
     /// A round must lower some bound by more than this share of it to go on.
     double tolerance = 1e-3;
+    /// When > 0, the rounds after the first run in the submesh mode with this
+    /// SimplexAssemblyOptions::submesh_band: they start from the previous verified map, where only
+    /// the largest distortions need work, so each solves regions around the simplices within that
+    /// band of the bound with the rest of the map fixed. The first round runs in options.mode
+    /// (it may have folds to repair). 0: every round in options.mode.
+    double submesh_band = 0.0;
+    /// Each next bound is the largest distortion times 1 + margin. With 0 the simplex at the
+    /// maximum starts at its bound, where the barrier is infinite, and the round disassembles;
+    /// a small margin keeps the previous result a feasible start (the submesh mode's regions then
+    /// go straight to the vertex stage, with the barrier at its steepest on that simplex).
+    double margin = 0.0;
     /// A front-end's own check of a round's result beyond the driver's verification (PolyCube:
     /// verify_polycube() on its positions); a round it rejects counts as one that did not verify.
     std::function<bool(const SimplexAssemblyResult&)> accept;

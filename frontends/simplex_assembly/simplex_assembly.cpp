@@ -46,8 +46,9 @@ std::string Verification::describe() const {
 
 std::string SubmeshStats::describe() const {
     std::ostringstream out;
-    out << "Submesh mode: " << start_bad << " bad simplices in the start (" << start << "), "
-        << rounds.size() << " round" << (rounds.size() == 1 ? "" : "s") << ", " << solves
+    out << "Submesh mode: " << start_bad << " bad simplices in the start (" << start << "), ";
+    if (start_near_bound > 0) out << start_near_bound << " near the bound, ";
+    out << rounds.size() << " round" << (rounds.size() == 1 ? "" : "s") << ", " << solves
         << " submesh solves (largest " << largest_submesh << " simplices, up to " << max_rings
         << " rings, " << iterations << " Newton steps in all)";
     if (!rounds.empty()) out << ", " << rounds.back().remaining << " bad simplices left";

@@ -142,6 +142,9 @@ struct SubmeshStats {
     int start_untangle_iterations = 0;
     std::string start_untangle;
     Index start_bad = 0;  ///< bad simplices of the start
+    /// Simplices of the start within options.submesh_band of their bound (and not bad), whose
+    /// regions the first round also solves.
+    Index start_near_bound = 0;
     std::vector<SubmeshRound> rounds;
     Index solves = 0;           ///< submesh solves, retries included
     Index iterations = 0;       ///< Newton steps summed over them

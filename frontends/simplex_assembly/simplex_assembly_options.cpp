@@ -100,6 +100,8 @@ void SimplexAssemblyOptions::validate() const {
     if (rings < 1) fail("rings", rings, "must be >= 1");
     if (max_rings < rings) fail("max_rings", max_rings, "must be >= rings");
     if (max_rounds < 0) fail("max_rounds", max_rounds, "must be >= 0");
+    if (!(submesh_band >= 0.0 && submesh_band < 1.0))
+        fail("submesh_band", submesh_band, "must be in [0, 1)");
     if (start_iterations < 0) fail("start_iterations", start_iterations, "must be >= 0");
     if (!(auto_bad_share >= 0.0 && auto_bad_share <= 1.0))
         fail("auto_bad_share", auto_bad_share, "must be in [0, 1]");

@@ -112,6 +112,12 @@ struct SimplexAssemblyOptions {
     int rings = 4;       ///< m: rings of simplices around the bad ones
     int max_rings = 20;  ///< m_max: a region that fails grows by 2 rings up to this
     int max_rounds = 2;  ///< l_max: rounds after the first
+    /// The first round's regions also surround every simplex whose barrier distortion d is within
+    /// this share of its finite bound K: d >= d_I + (1 - band)(K - d_I), d_I the distortion of the
+    /// identity (each bounded barrier alike). Solved with the bound K, their barrier pushes the
+    /// largest distortion down while the rest of the map stays fixed: the optimal-bound rounds in
+    /// the submesh mode (optimal_bound.h). 0: only the bad simplices (the paper's step 3).
+    double submesh_band = 0.0;
     /// Most local/global iterations after the paper's M^0 in the submesh mode's start:
     /// Anderson-accelerated ARAP (rotations) or ASAP (similarities) iterations, which spread
     /// large handle motions (frontends/simplex_assembly/submesh_start.h); 0 = start from the

@@ -87,6 +87,11 @@ class SimplexTerm : public SimplexTermBase {
     /// Whether the barrier's e^{s d} at A is beyond barrier.h's exponent cap, where it no longer
     /// ranks the other simplices (the built-in SimplexEnergy; false for other energies).
     virtual bool beyond_exponent_cap(const Mat<D>&) const { return false; }
+    /// For a barrier with a finite bound K on a distortion d (the built-in SimplexEnergy or a
+    /// DistortionBarrier): sets marked[s] = 1 for every s whose d(A[s]) >= d_I + (1 - band)
+    /// (K - d_I), d_I the distortion of the identity; nothing for other energies.
+    virtual void mark_near_bound(const std::vector<Mat<D>>&, double,
+                                 std::vector<unsigned char>&) const {}
     /// The same barrier with bound K; throws InvalidArgumentError for other energies.
     virtual std::shared_ptr<const SimplexTerm<D>> with_bound(double) const {
         throw InvalidArgumentError(name() + ": not a barrier on a distortion, it has no bound");
@@ -177,6 +182,30 @@ class SimplexTermOf final : public SimplexTerm<D> {
                    kBarrierExponentCap;
         } else {
             return false;
+        }
+    }
+    void mark_near_bound(const std::vector<Mat<D>>& A, double band,
+                         std::vector<unsigned char>& marked) const override {
+        if constexpr (std::is_same_v<E, SimplexEnergy<D>> || DistortionBarrierEnergy<E, D>) {
+            auto distortion = [&](const Mat<D>& a) -> double {
+                if constexpr (std::is_same_v<E, SimplexEnergy<D>>) {
+                    return energy_->barrier_distortion(a);
+                } else {
+                    return double(energy_->distortion(a));
+                }
+            };
+            double K;
+            if constexpr (std::is_same_v<E, SimplexEnergy<D>>) {
+                K = energy_->options().barrier.bound;
+            } else {
+                K = energy_->bound();
+            }
+            if (!std::isfinite(K)) return;
+            const double identity = distortion(Mat<D>::Identity());
+            const double threshold = identity + (1.0 - band) * (K - identity);
+            tbb::parallel_for(Index(0), Index(A.size()), [&](Index s) {
+                if (!(distortion(A[s]) < threshold)) marked[s] = 1;
+            });
         }
     }
     std::shared_ptr<const SimplexTerm<D>> with_bound(double K) const override {

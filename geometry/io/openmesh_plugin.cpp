@@ -4,6 +4,8 @@
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
 
+#include <cctype>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -153,13 +155,13 @@ void check_start(const std::string& path, bool stl, bool binary_stl) {
 
 // A PLY header's lines, checked before OpenMesh parses it (its reader writes through a missing
 // element when a `property` line comes before any `element` line: a crash found by fuzzing):
-// each line a known keyword, every property after an element, an element's count a number, and an
-// `end_header` line.
+// each line a known keyword, one well-formed `format` line, every property after an element, an
+// element's count a number, and an `end_header` line.
 void check_ply_header(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     std::string line;
     std::getline(in, line);  // `ply`, checked by check_start
-    bool element = false;
+    bool element = false, format_seen = false;
     std::set<std::string> elements;
     for (int number = 2; std::getline(in, line); ++number) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -170,7 +172,24 @@ void check_ply_header(const std::string& path) {
             throw InputError(path + ":" + std::to_string(number) + ": " + what);
         };
         if (keyword == "end_header") return;
-        if (keyword == "element") {
+        if (keyword == "format") {
+            // `format FORMAT VERSION`: OpenMesh's reader loops for ever on a version that is not
+            // a number (`format ascii float z`: found by fuzzing).
+            std::string type, version, extra;
+            words >> type >> version;
+            char* end = nullptr;
+            const bool number = !version.empty() &&
+                                (std::strtod(version.c_str(), &end), *end == '\0') &&
+                                std::isdigit(static_cast<unsigned char>(version[0]));
+            if ((type != "ascii" && type != "binary_little_endian" &&
+                 type != "binary_big_endian") ||
+                !number || (words >> extra))
+                fail(
+                    "expected 'format ascii|binary_little_endian|binary_big_endian VERSION' in "
+                    "the PLY header");
+            if (format_seen) fail("a second 'format' line in the PLY header");
+            format_seen = true;
+        } else if (keyword == "element") {
             long long count = -1;
             if (!(words >> name >> count) || count < 0)
                 fail("expected 'element NAME COUNT' in the PLY header");
@@ -194,8 +213,7 @@ void check_ply_header(const std::string& path) {
                 fail(
                     "expected 'property TYPE NAME' or 'property list TYPE TYPE NAME' with PLY "
                     "types (char, uchar, ..., float, double)");
-        } else if (keyword != "format" && keyword != "comment" && keyword != "obj_info" &&
-                   !keyword.empty()) {
+        } else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty()) {
             std::string shown;
             for (const char c : keyword.substr(0, 40)) {
                 const auto u = static_cast<unsigned char>(c);

@@ -282,38 +282,79 @@ void check_legacy_header(const std::string& path) {
                          io::quote(first));
 }
 
-/// Whether `token` is a whole decimal integer (an optional sign, then digits only).
+/// Whether `token` is a whole decimal integer (an optional sign, then at most 18 digits).
 bool is_integer(std::string_view token) {
     std::size_t i = !token.empty() && (token[0] == '-' || token[0] == '+') ? 1 : 0;
-    if (i == token.size()) return false;
+    if (i == token.size() || token.size() - i > 18) return false;  // 18 digits fit a long long
     for (; i < token.size(); ++i) {
         if (!std::isdigit(static_cast<unsigned char>(token[i]))) return false;
     }
     return true;
 }
 
-/// The cell sections of an ASCII legacy file (VERTICES, LINES, POLYGONS, TRIANGLE_STRIPS, CELLS,
-/// in the classic `n size` layout or 5.x's OFFSETS/CONNECTIVITY, and CELL_TYPES), checked before
-/// VTK reads them: VTK 9.1's reader dereferences a null string when such a section is cut short or
-/// holds a non-number (a crash found by fuzzing). Each section must hold as many integers as it
-/// declares; the scan stops at POINT_DATA or CELL_DATA (names there are free text). Binary legacy
-/// files are left to VTK.
-void check_legacy_cells(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::vector<std::string> tokens;
-    bool ascii = false;
-    std::string line;
-    for (int number = 1; number <= 3 && std::getline(in, line); ++number) {
-        if (number == 3) {
-            std::istringstream words(line);
-            std::string format;
-            words >> format;
-            ascii = format == "ASCII";
+/// Whether `token` is a whole decimal number as `std::istream >> double` reads it: a sign, digits
+/// with at most one point, an exponent.
+bool is_decimal_number(std::string_view token) {
+    std::size_t i = !token.empty() && (token[0] == '-' || token[0] == '+') ? 1 : 0;
+    std::size_t digits = 0;
+    bool point = false;
+    for (; i < token.size(); ++i) {
+        if (std::isdigit(static_cast<unsigned char>(token[i])))
+            ++digits;
+        else if (token[i] == '.' && !point)
+            point = true;
+        else
+            break;
+    }
+    if (digits == 0) return false;
+    if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
+        ++i;
+        if (i < token.size() && (token[i] == '-' || token[i] == '+')) ++i;
+        if (i == token.size()) return false;
+        for (; i < token.size(); ++i) {
+            if (!std::isdigit(static_cast<unsigned char>(token[i]))) return false;
         }
     }
-    if (!ascii) return;
+    return i == token.size();
+}
+
+/// Whether `token` names the keyword `keyword` (lower case) as VTK's legacy reader sees it: VTK
+/// lowercases what it reads and compares only the keyword's length (`strncmp`), so that
+/// `POLyGONS` and `polygonsX` are both its POLYGONS.
+bool is_vtk_keyword(std::string_view token, std::string_view keyword) {
+    if (token.size() < keyword.size()) return false;
+    for (std::size_t i = 0; i < keyword.size(); ++i) {
+        if (std::tolower(static_cast<unsigned char>(token[i])) != keyword[i]) return false;
+    }
+    return true;
+}
+
+/// The cell sections of an ASCII legacy file (VERTICES, LINES, POLYGONS, TRIANGLE_STRIPS, CELLS,
+/// in the classic `n size` layout before version 5 and 5.x's OFFSETS/CONNECTIVITY from version 5
+/// on, and CELL_TYPES), checked before VTK reads them: VTK 9.1's reader dereferences a null string
+/// when such a section is cut short or holds a non-number (a crash found by fuzzing). Each section
+/// must hold as many integers as it declares, and a FIELD section before POINT_DATA and CELL_DATA
+/// as many numbers as its arrays declare. Keywords, the file type and the version are read
+/// as VTK reads them (is_vtk_keyword; the type is the first word after the title line, the
+/// version `%d.%d` after `# vtk DataFile Version`, 0 when there is none), so that no spelling VTK
+/// accepts escapes the check. The scan stops at POINT_DATA or CELL_DATA (names there are free
+/// text). Binary legacy files are left to VTK.
+void check_legacy_cells(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string version_line, title, format;
+    std::getline(in, version_line);
+    std::getline(in, title);
+    in >> format;
+    if (!is_vtk_keyword(format, "ascii")) return;
+    int major = 0, minor = 0;
+    const std::string_view prefix = "# vtk DataFile Version";
+    if (version_line.size() < prefix.size() ||
+        std::sscanf(version_line.c_str() + prefix.size(), "%d.%d", &major, &minor) != 2)
+        major = 0;
+    const bool offsets_layout = major >= 5;
+    std::vector<std::string> tokens;
     for (std::string token; in >> token;) {
-        if (token == "POINT_DATA" || token == "CELL_DATA") break;
+        if (is_vtk_keyword(token, "point_data") || is_vtk_keyword(token, "cell_data")) break;
         tokens.push_back(std::move(token));
     }
     const auto fail = [&](const std::string& section, const std::string& what) {
@@ -321,7 +362,8 @@ void check_legacy_cells(const std::string& path) {
     };
     // Requires `count` integers from tokens[i] on; returns the index after them.
     const auto integers = [&](std::size_t i, long long count, const std::string& section) {
-        if (count < 0 || static_cast<unsigned long long>(count) > tokens.size() - i)
+        if (count < 0 || i > tokens.size() ||
+            static_cast<unsigned long long>(count) > tokens.size() - i)
             fail(section, "is cut short (" + std::to_string(count) + " numbers declared)");
         for (long long k = 0; k < count; ++k, ++i) {
             if (!is_integer(tokens[i]))
@@ -330,29 +372,102 @@ void check_legacy_cells(const std::string& path) {
         }
         return i;
     };
-    static const std::set<std::string> kCellSections = {"VERTICES", "LINES", "POLYGONS",
-                                                        "TRIANGLE_STRIPS", "CELLS"};
+    // A count as VTK reads it: a whole number that fits.
+    const auto count_at = [&](std::size_t i, const std::string& section, const char* what) {
+        if (i >= tokens.size() || !is_integer(tokens[i]) || tokens[i].size() > 18)
+            fail(section, std::string("has no ") + what);
+        return std::stoll(tokens[i]);
+    };
+    static const char* const kCellSections[] = {"vertices", "lines", "polygons", "triangle_strips",
+                                                "cells"};
+    // The numeric array types of VTK's ReadArray (string and variant arrays are not read here).
+    static const char* const kNumericTypes[] = {
+        "bit",   "char",         "signed_char", "unsigned_char", "short",        "unsigned_short",
+        "int",   "unsigned_int", "long",        "unsigned_long", "vtktypeint64", "vtktypeuint64",
+        "float", "double",       "vtkidtype"};
     for (std::size_t i = 0; i < tokens.size();) {
-        const std::string& section = tokens[i];
-        if (section == "CELL_TYPES") {
-            if (i + 1 >= tokens.size() || !is_integer(tokens[i + 1])) fail(section, "has no count");
-            i = integers(i + 2, std::stoll(tokens[i + 1]), section);
-        } else if (kCellSections.count(section) != 0) {
-            if (i + 2 >= tokens.size() || !is_integer(tokens[i + 1]) || !is_integer(tokens[i + 2]))
-                fail(section, "has no 'COUNT SIZE' after its name");
-            const long long cells = std::stoll(tokens[i + 1]), size = std::stoll(tokens[i + 2]);
+        const std::string& token = tokens[i];
+        const std::string section = token.substr(0, 40);
+        if (is_vtk_keyword(token, "field")) {
+            // FIELD NAME COUNT, then per array NAME COMPONENTS TUPLES TYPE and its values (or
+            // NULL_ARRAY). VTK 9.1 dereferences the null field data its reader returns for a
+            // malformed one here, before the points (a crash found by fuzzing).
+            const long long arrays = count_at(i + 2, section, "'NAME COUNT' after its name");
+            if (arrays < 0) fail(section, "declares " + std::to_string(arrays) + " arrays");
             i += 3;
-            if (i < tokens.size() && tokens[i] == "OFFSETS") {
-                i = integers(i + 2, cells, section + " OFFSETS");
-                if (i >= tokens.size() || tokens[i] != "CONNECTIVITY")
-                    fail(section, "has no CONNECTIVITY after its OFFSETS");
-                i = integers(i + 2, size, section + " CONNECTIVITY");
-            } else {
-                i = integers(i, size, section);
+            for (long long a = 0; a < arrays; ++a) {
+                if (i < tokens.size() && tokens[i] == "NULL_ARRAY") {
+                    ++i;
+                    continue;
+                }
+                const std::string array = section + " array " + std::to_string(a);
+                const long long components = count_at(i + 1, array, "'COMPONENTS TUPLES TYPE'");
+                const long long tuples = count_at(i + 2, array, "'COMPONENTS TUPLES TYPE'");
+                if (i + 3 >= tokens.size() ||
+                    std::none_of(std::begin(kNumericTypes), std::end(kNumericTypes),
+                                 [&](const char* k) { return is_vtk_keyword(tokens[i + 3], k); }))
+                    fail(array, "has no numeric type (a string or variant array, or none)");
+                if (components < 1 || tuples < 0 || components > (1LL << 31) ||
+                    tuples > (1LL << 31))
+                    fail(array, "declares " + std::to_string(components) + " components and " +
+                                    std::to_string(tuples) + " tuples");
+                i += 4;
+                const long long values = components * tuples;
+                if (static_cast<unsigned long long>(values) > tokens.size() - i)
+                    fail(array, "is cut short (" + std::to_string(values) + " values declared)");
+                for (long long k = 0; k < values; ++k, ++i) {
+                    if (!is_decimal_number(tokens[i]))
+                        fail(array, "holds " + io::quote(tokens[i].substr(0, 40)) +
+                                        " where a number belongs");
+                }
             }
-        } else {
-            ++i;
+            continue;
         }
+        if (is_vtk_keyword(token, "cell_types")) {
+            i = integers(i + 2, count_at(i + 1, section, "count"), section);
+            continue;
+        }
+        if (std::none_of(std::begin(kCellSections), std::end(kCellSections),
+                         [&](const char* k) { return is_vtk_keyword(token, k); })) {
+            ++i;
+            continue;
+        }
+        const long long cells = count_at(i + 1, section, "'COUNT SIZE' after its name");
+        const long long size = count_at(i + 2, section, "'COUNT SIZE' after its name");
+        i += 3;
+        if (!offsets_layout) {
+            // `cells` cells, each its point count then its points: `size` numbers in all. VTK
+            // walks them by the counts without checking (a crash found by fuzzing).
+            const std::size_t first = i;
+            i = integers(i, size, section);
+            std::size_t k = first;
+            for (long long c = 0; c < cells; ++c) {
+                const long long points = k < i ? std::stoll(tokens[k]) : -1;
+                if (points < 0 || static_cast<unsigned long long>(points) >= i - k)
+                    fail(section, "does not hold " + std::to_string(cells) +
+                                      " cells of 'COUNT POINTS...' in " + std::to_string(size) +
+                                      " numbers");
+                k += static_cast<std::size_t>(points) + 1;
+            }
+            if (k != i) fail(section, "holds more than its " + std::to_string(cells) + " cells");
+            continue;
+        }
+        // Version 5: OFFSETS TYPE, `cells` offsets, CONNECTIVITY TYPE, `size` indices; the
+        // offsets rise from 0 to `size`.
+        if (i >= tokens.size() || !is_vtk_keyword(tokens[i], "offsets"))
+            fail(section, "has no OFFSETS (a version 5 file)");
+        const std::size_t first = i + 2;
+        i = integers(i + 2, cells, section + " OFFSETS");
+        for (std::size_t k = first; k < i; ++k) {
+            const long long offset = std::stoll(tokens[k]);
+            const long long before = k == first ? 0 : std::stoll(tokens[k - 1]);
+            if (offset < before || offset > size || (k == first && offset != 0) ||
+                (k + 1 == i && offset != size))
+                fail(section + " OFFSETS", "do not rise from 0 to " + std::to_string(size));
+        }
+        if (i >= tokens.size() || !is_vtk_keyword(tokens[i], "connectivity"))
+            fail(section, "has no CONNECTIVITY after its OFFSETS");
+        i = integers(i + 2, size, section + " CONNECTIVITY");
     }
 }
 

@@ -75,7 +75,7 @@ TEST(DistortionBarrier, BuiltinDistortionEqualsTheSimplexEnergysBarrier) {
             EXPECT_LT((p1 - p2).norm(), 1e-9 * p1.norm());
         }
     }
-    EXPECT_THROW(BuiltinDistortion<3>(DistortionType::kArap), InvalidArgumentError);
+    EXPECT_THROW(BuiltinDistortion<3>{DistortionType::kArap}, InvalidArgumentError);
 }
 
 TEST(DistortionBarrier, IsInfiniteAtAndBeyondItsBoundAndForInvertedMatrices) {

@@ -109,6 +109,41 @@ TEST(Parameterization, OptimalBoundLowersTheLargestDistortion) {
     EXPECT_LE(r.reached_bound, r.rounds[0].max_distortion);
 }
 
+TEST(Parameterization, SubmeshOptimalBoundReachesTheFullModesBound) {
+    // A disk with two bumps: LSCM's largest distortions sit on their slopes, far apart.
+    SimplicialMesh mesh = grid_triangles(30, 30);
+    Eigen::MatrixXd lifted(mesh.num_vertices(), 3);
+    for (Index v = 0; v < mesh.num_vertices(); ++v) {
+        const double x = mesh.vertices(v, 0), y = mesh.vertices(v, 1);
+        auto bump = [&](double cx, double cy, double h) {
+            return h * std::exp(-40.0 * ((x - cx) * (x - cx) + (y - cy) * (y - cy)));
+        };
+        lifted.row(v) << x, y, bump(0.3, 0.6, 0.2) + bump(0.7, 0.3, 0.15);
+    }
+    mesh.vertices = lifted;
+    ParameterizationResult r[2];
+    const SolveMode modes[2] = {SolveMode::kFull, SolveMode::kSubmesh};
+    for (int k = 0; k < 2; ++k) {
+        ParameterizationOptions options = conformal_options();
+        options.optimal_bound_rounds = 20;
+        options.solver.mode = modes[k];
+        r[k] = parameterize(mesh, "two bumps", nullptr, InitialMap::kLscm, options);
+        ASSERT_TRUE(r[k].success) << to_string(modes[k]) << ": " << r[k].message;
+        EXPECT_EQ(r[k].solve.verification.inverted, 0);
+        EXPECT_EQ(r[k].solve.mode, modes[k]);
+        EXPECT_LE(r[k].reached_bound, r[k].solve.verification.bound);
+    }
+    EXPECT_GT(r[1].initial_quality.conformal.max, 1.1) << "LSCM should be distorted somewhere";
+    // The submesh rounds solved around the simplices near the bound, not only those over it.
+    EXPECT_GT(r[1].solve.submesh.start_near_bound, 0);
+    EXPECT_GE(r[1].rounds.size(), 3u);
+    // Each submesh round leaves most of the map as it was, yet the bound reached is the full
+    // mode's (within a small tolerance: both stop at the same share of improvement per round).
+    EXPECT_LT(r[1].reached_bound - 1.0, (r[0].reached_bound - 1.0) * 1.02)
+        << "full " << r[0].reached_bound << ", submesh " << r[1].reached_bound;
+    EXPECT_LT(r[1].reached_bound, r[1].rounds[1].max_distortion);
+}
+
 TEST(Parameterization, ABoundedSubmeshRunRemovesBranchPointsOfAFoldedStart) {
     // The unit square mapped by holomorphic polynomials with a critical point z0 45 or more rings
     // from the free boundary, beyond m_max: f - f(z0) ~ (z - z0)^tau there, a fold that turns

@@ -105,10 +105,23 @@ TEST(OpenMeshIo, RefusedFacesAndBadFilesAreErrorsAndNothingIsPrinted) {
     EXPECT_TRUE(throws_input_error(read("garbage.ply", "this is not a ply file\n"),
                                    {"garbage.ply:1: not a PLY file: expected 'ply', found "
                                     "'this is not a ply file'"}));
-    EXPECT_TRUE(throws_input_error(read("header.ply", "ply\nformat nonsense\n"),
+    EXPECT_TRUE(throws_input_error(read("header.ply", "ply\nformat ascii 1.0\n"),
                                    {"header.ply: the PLY header has no 'end_header' line"}));
-    EXPECT_TRUE(throws_input_error(read("header.ply", "ply\nformat nonsense\nend_header\n"),
+    EXPECT_TRUE(throws_input_error(read("header.ply", "ply\nformat ascii 1.0\nend_header\n"),
                                    {"header.ply:", "cannot read as PLY"}));
+    // A format line OpenMesh's reader looped on for ever (its version not a number; found by
+    // fuzz_ply_stl), and other malformed ones.
+    for (const char* format : {"format ascii float z", "format nonsense", "format ascii",
+                               "format ascii 1.0 x", "format binary 1.0"}) {
+        EXPECT_TRUE(throws_input_error(
+            read("format.ply", std::string("ply\n") + format + "\nend_header\n"),
+            {"format.ply:2: expected 'format ascii|binary_little_endian|binary_big_endian "
+             "VERSION'"}))
+            << format;
+    }
+    EXPECT_TRUE(throws_input_error(
+        read("twice.ply", "ply\nformat ascii 1.0\nformat ascii 1.0\nend_header\n"),
+        {"twice.ply:3: a second 'format' line"}));
     // A property before any element made OpenMesh's reader write through a missing element.
     EXPECT_TRUE(throws_input_error(
         read("order.ply", "ply\nformat ascii 1.0\nproperty float x\nend_header\n"),

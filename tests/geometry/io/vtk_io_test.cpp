@@ -165,6 +165,88 @@ TEST(VtkIo, MalformedFilesAreErrorsAndNothingIsPrinted) {
                                    {"absent.vtu: cannot open (No such file or directory)"}));
 }
 
+// VTK's legacy reader lowercases its keywords and compares only their length, and takes the file
+// type from the first word after the title: the cell sections are checked before VTK reads them
+// (it crashes on a section cut short or holding a non-number) however they are spelt. Found by
+// fuzz_vtk: `POLyGONS 1 4 / 3( 0 1 2` reached VTK unchecked.
+TEST(VtkIo, CellSectionsAreCheckedHoweverTheirKeywordsAreSpelt) {
+    TempFolder folder;
+    const auto poly = [](const std::string& version, const std::string& type,
+                         const std::string& cells) {
+        return "# vtk DataFile Version " + version + "\npoly\n" + type +
+               "\nDATASET POLYDATA\nPOINTS 4 float\n0 0 0 1 0 0 1 1 0 0 1 0\n" + cells;
+    };
+    const auto read = [&](const std::string& name, const std::string& content) {
+        const std::string path = folder.write(name, content);
+        return [path] { read_vtk(path); };
+    };
+    testing::internal::CaptureStderr();
+    EXPECT_TRUE(
+        throws_input_error(read("case.vtk", poly("3.0", "ASCII", "POLyGONS 1 4\n3( 0 1 2\n")),
+                           {"case.vtk: the POLyGONS section holds '3('"}));
+    EXPECT_TRUE(throws_input_error(read("long.vtk", poly("3.0", "ASCII", "polygonsX 1 4\n3 0 1\n")),
+                                   {"long.vtk: the polygonsX section is cut short"}));
+    EXPECT_TRUE(
+        throws_input_error(read("type.vtk", poly("3.0", "\n  asciiZ", "POLYGONS 1 4\n3 0 1 x\n")),
+                           {"type.vtk: the POLYGONS section holds 'x'"}));
+    EXPECT_TRUE(throws_input_error(
+        read("huge.vtk", poly("3.0", "ASCII", "POLYGONS 1 99999999999999999999999\n3 0 1 2\n")),
+        {"huge.vtk: the POLYGONS section has no 'COUNT SIZE'"}));
+    EXPECT_TRUE(throws_input_error(read("v5.vtk", poly("5.1", "ASCII", "POLYGONS 2 3\n3 0 1 2\n")),
+                                   {"v5.vtk: the POLYGONS section has no OFFSETS"}));
+    EXPECT_TRUE(throws_input_error(
+        read("v5short.vtk", poly("5.1", "ASCII",
+                                 "POLYGONS 2 3\nOFFSETS vtktypeint64\n0 3\nCONNECTIVITY "
+                                 "vtktypeint64\n0 1\n")),
+        {"v5short.vtk: the POLYGONS CONNECTIVITY section is cut short (3 numbers declared)"}));
+    EXPECT_TRUE(throws_input_error(
+        read("v3offsets.vtk", poly("3.0", "ASCII",
+                                   "POLYGONS 2 3\nOFFSETS vtktypeint64\n0 3\nCONNECTIVITY "
+                                   "vtktypeint64\n0 1 2\n")),
+        {"v3offsets.vtk: the POLYGONS section holds 'OFFSETS'"}));
+    // Cells whose point counts disagree with the section's COUNT and SIZE (VTK walks them by
+    // the counts: a crash found by fuzz_vtk), and version 5 offsets that do not rise to SIZE.
+    EXPECT_TRUE(throws_input_error(read("counts.vtk", poly("3.0", "ASCII", "POLYGONS 110 1\n1\n")),
+                                   {"counts.vtk: the POLYGONS section does not hold 110 cells"}));
+    EXPECT_TRUE(throws_input_error(
+        read("extra.vtk", poly("3.0", "ASCII", "POLYGONS 1 8\n3 0 1 2\n3 0 2 3\n")),
+        {"extra.vtk: the POLYGONS section holds more than its 1 cells"}));
+    EXPECT_TRUE(throws_input_error(
+        read("offsets.vtk", poly("5.1", "ASCII",
+                                 "POLYGONS 3 6\nOFFSETS vtktypeint64\n0 4 3\nCONNECTIVITY "
+                                 "vtktypeint64\n0 1 2 0 2 3\n")),
+        {"offsets.vtk: the POLYGONS OFFSETS section do not rise from 0 to 6"}));
+    // A FIELD section before the points: VTK 9.1 crashed on a malformed one (fuzz_vtk).
+    const std::string field = "FIELD FieldData 2\nTimeValue 1 1 double\n0.5\n";
+    EXPECT_TRUE(throws_input_error(
+        read("field.vtk", poly("3.0", "ASCII", "FIELD FieldData 2\nu92 double0 4 3\n")),
+        {"field.vtk: the FIELD array 0 section has no 'COMPONENTS TUPLES TYPE'"}));
+    EXPECT_TRUE(throws_input_error(
+        read("fieldshort.vtk", poly("3.0", "ASCII", field + "Cycle 1 2 int\n7\n")),
+        {"fieldshort.vtk: the FIELD array 1 section is cut short (2 values declared)"}));
+    EXPECT_TRUE(throws_input_error(
+        read("fieldtext.vtk", poly("3.0", "ASCII", field + "Name 1 1 string\nx\n")),
+        {"fieldtext.vtk: the FIELD array 1 section has no numeric type"}));
+    EXPECT_TRUE(throws_input_error(
+        read("fieldnan.vtk", poly("3.0", "ASCII", field + "Cycle 1 1 float\n1.5e\n")),
+        {"fieldnan.vtk: the FIELD array 1 section holds '1.5e' where a number belongs"}));
+    testing::internal::GetCapturedStderr();
+    // The same spellings, and a FIELD section, in a well-formed file are read.
+    for (const auto& [name, content] :
+         {std::pair<std::string, std::string>{
+              "lower.vtk", poly("3.0", "ascii", "polygons 2 8\n3 0 1 2\n3 0 2 3\n")},
+          {"v5.vtk", poly("5.1", "ASCII",
+                          "POLYGONS 3 6\nOFFSETS vtktypeint64\n0 3 6\nCONNECTIVITY "
+                          "vtktypeint64\n0 1 2 0 2 3\n")},
+          {"fieldok.vtk", poly("3.0", "ASCII",
+                               "FIELD FieldData 2\nTimeValue 1 1 double\n0.5\nCycle 2 1 int\n"
+                               "7 -8\nPOLYGONS 2 8\n3 0 1 2\n3 0 2 3\n")}}) {
+        SCOPED_TRACE(name);
+        const MeshFile file = read_vtk(folder.write(name, content));
+        EXPECT_EQ(file.mesh.simplices.rows(), 2);
+    }
+}
+
 TEST(VtkIo, WritersCheckArgumentsAndWriteAtomically) {
     TempFolder folder;
     Eigen::MatrixXd positions(4, 3);
