@@ -16,8 +16,8 @@
 // problem's own), the boundary-angle barrier E_theta when asked (r-SA and f-SA), and the user's
 // linear constraints on linear parts, and the plugins' terms. Anchored simplices (one per
 // connected part without handles) keep their linear part, translation and copies fixed, which
-// removes the global motion such a part would otherwise have (only the translation in r-SA and
-// f-SA when a plugin removes_rigid_motion()).
+// removes the global motion such a part would otherwise have (in r-SA and f-SA, when a plugin
+// removes_rigid_motion(), only the translation and, as one assembly row, the trace of A).
 
 #include <memory>
 #include <utility>
