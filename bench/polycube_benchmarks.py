@@ -9,6 +9,12 @@ markdown table; times are wall seconds of each stage, peak memory of the whole r
 
 With --write, the table replaces the section between <!-- polycube-pieces:begin --> and
 <!-- polycube-pieces:end --> of that file.
+
+With --solve, runs the whole of `sa polycube` instead (the solve of issue 21, with --optimal-bound
+unless --bound K is given, --max-time per run), on the cases of SOLVE_CASES (S1 with S1.flags
+last), each output also checked by check_map.py, into the section polycube-solve:
+
+  python3 bench/polycube_benchmarks.py --solve [--max-time 300] [--only NAME] [--write FILE]
 """
 import argparse
 import json
@@ -34,6 +40,76 @@ CASES = [
     ('S1 (fastbndpolycube labeling.txt)', 'polycube_withHexEx/S1.mesh',
      ['--labels', 'fastbndpolycube/labeling.txt', '--surface', 'fastbndpolycube/boundary.obj']),
 ]
+
+# The solve's cases: issue 21's table, S1 last (the largest).
+SOLVE_CASES = [
+    ('B0', 'robustPolycube/B0.mesh', []),
+    ('NY_2', 'robustPolycube/NY_2.mesh', []),
+    ('pente', 'robustPolycube/pente.mesh', []),
+    ('S3', 'robustPolycube/S3.mesh', []),
+    ('M1_tet', 'robustPolycube/M1_tet.mesh', []),
+    ('cup', 'robustPolycube/cup.mesh', []),
+    ('S1 (S1.flags)', 'polycube_withHexEx/S1.mesh', ['--labels', 'polycube_withHexEx/S1.flags']),
+]
+
+
+def run_solve(a, name, mesh, labels, work):
+    folder = os.path.join(a.data, 'polycube')
+    base = os.path.join(work, name.split()[0])
+    out, report = base + '.mesh', base + '.json'
+    args = [os.path.join(folder, x) if x.endswith(('.flags', '.txt', '.obj')) else x for x in labels]
+    bound = ['--bound', a.bound] if a.bound else ['--optimal-bound']
+    command = ([a.sa, 'polycube', '--mesh', os.path.join(folder, mesh)] + args + bound +
+               ['--out', out, '--report', report, '--max-time', str(a.max_time), '--quiet',
+                '--force'])
+    print('running %s ...' % name, file=sys.stderr, flush=True)
+    r = run_measured(command, a.max_time * 2 + 120)
+    row = dict(name=name)
+    if r is None:
+        row['status'] = 'killed'
+        return row
+    if r['code'] not in (0, 1) or not os.path.exists(report):
+        row['status'] = 'error: ' + (r['err'].strip().splitlines() or ['exit %d' % r['code']])[-1]
+        return row
+    with open(report) as f:
+        row['report'] = json.load(f)
+    row['code'], row['wall'], row['peak'] = r['code'], r['wall'], r['peak_kb'] / 1024.0 / 1024.0
+    c = subprocess.run([sys.executable, a.checker, '--rest', base + '.rest.mesh', '--result', out],
+                       capture_output=True, text=True)
+    try:
+        row['check'] = json.loads(c.stdout)
+    except json.JSONDecodeError:
+        row['check'] = dict(ok=False, error=(c.stdout + c.stderr).strip())
+    row['status'] = 'ok'
+    return row
+
+
+def solve_table(rows):
+    lines = ['| mesh | tets (after splits) | flipped at start | charts | δ_con max / mean | '
+             'δ_iso max / mean | reached bound | rounds | assembly + vertex-stage iterations | '
+             'time (s) | peak memory (GB) | verified (exit) | check_map.py: inverted / degenerate |',
+             '|---|---|---|---|---|---|---|---|---|---|---|---|---|']
+    for r in rows:
+        if r.get('status') != 'ok':
+            lines.append('| %s | %s |' % (r['name'], r.get('status')))
+            continue
+        rep, chk = r['report'], r['check']
+        prep, q = rep['preparation'], rep['verification']['quality']
+        start = rep['start']['quality']
+        rounds = rep['rounds']
+        iterations = '%d + %d' % (rep['solve']['assembly_iterations'],
+                                  rep['solve']['vertex_stage_iterations'])
+        lines.append('| %s | %s | %s | %s | %s / %s | %s / %s | %s | %s | %s | %s | %s | %s (%d) | '
+                     '%s / %s |' % (
+                         r['name'], prep['splits']['tets'],
+                         start['inverted'], prep['labels']['charts'],
+                         fmt(q['conformal']['max'], 4), fmt(q['conformal']['mean'], 4),
+                         fmt(q['isometric']['max'], 4), fmt(q['isometric']['mean'], 4),
+                         fmt(rep['reached_bound'], 4) if rep['reached_bound'] != 'inf' else 'inf',
+                         len(rounds) if rounds else '-', iterations, fmt(r['wall'], 3),
+                         fmt(r['peak'], 2), 'yes' if rep['success'] else 'no', r['code'],
+                         fmt(chk.get('inverted')), fmt(chk.get('degenerate'))))
+    return '\n'.join(lines) + '\n'
 
 
 def run_case(a, name, mesh, labels, work):
@@ -102,7 +178,22 @@ def main():
     ap.add_argument('--only', help='run only the cases whose name contains this text')
     ap.add_argument('--timeout', type=float, default=600.0, help='seconds per run')
     ap.add_argument('--write', help='markdown file whose polycube-pieces section gets the table')
+    ap.add_argument('--solve', action='store_true', help='run `sa polycube` (the whole solve)')
+    ap.add_argument('--sa', default=os.path.join(ROOT, 'build', 'bin', 'sa'))
+    ap.add_argument('--max-time', type=float, default=300.0, help='--max-time of each solve')
+    ap.add_argument('--bound', help='--bound K instead of --optimal-bound')
+    ap.add_argument('--skip', help='skip the cases whose name contains this text')
     a = ap.parse_args()
+    if a.solve:
+        with tempfile.TemporaryDirectory(prefix='sa-polycube-solve-') as work:
+            rows = [run_solve(a, name, mesh, labels, work) for name, mesh, labels in SOLVE_CASES
+                    if (not a.only or a.only in name) and not (a.skip and a.skip in name)]
+        output = solve_table(rows)
+        print(output)
+        if a.write:
+            write_section(a.write, 'polycube-solve',
+                          'python3 bench/polycube_benchmarks.py ' + ' '.join(sys.argv[1:]), output)
+        return 0
     with tempfile.TemporaryDirectory(prefix='sa-polycube-bench-') as work:
         rows = [run_case(a, name, mesh, labels, work) for name, mesh, labels in CASES
                 if not a.only or a.only in name]

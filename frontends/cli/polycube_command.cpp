@@ -2,15 +2,21 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <set>
 
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/map_command.h"
+#include "frontends/cli/out_of_memory.h"
 #include "frontends/output/map_report.h"
 #include "frontends/polycube/polycube_output.h"
 #include "frontends/polycube/polycube_report.h"
+#include "frontends/polycube/polycube_solve.h"
+#include "geometry/io/medit_io.h"
 #include "geometry/io/mesh_file.h"
+#include "geometry/io/polycube_labels_io.h"
 #include "optim/errors.h"
+#include "optim/stopwatch.h"
 
 namespace sa::cli {
 
@@ -136,20 +142,126 @@ PreparedPolycube read_polycube_input(const PolycubePlan& plan, const Logger& log
 
 void write_polycube_outputs(const PolycubePlan& plan, const PreparedPolycube& prepared,
                             const Eigen::MatrixXd& positions,
-                            const PolycubeVerification& verification, nlohmann::json report) {
-    write_polycube_meshes(plan.out, prepared, positions);
-    if (!plan.vtu.empty()) write_polycube_vtu(plan.vtu, prepared, positions, verification);
-    if (!plan.png.empty()) {
-        write_polycube_png(
-            plan.png, prepared, positions, verification,
-            std::string("PolyCube, ") + (verification.passed ? "verified" : "NOT verified"));
+                            const PolycubeVerification& verification, nlohmann::json report,
+                            OutputPlan* staging) {
+    auto write = [&](const std::string& path, const auto& writer) {
+        if (path.empty()) return;
+        if (staging) {
+            staging->write(path, writer);
+        } else {
+            writer(path);
+        }
+    };
+    if (positions.rows() != prepared.mesh.num_vertices() || positions.cols() != 3) {
+        throw InvalidArgumentError("write_polycube_outputs: positions must be #V x 3 = " +
+                                   std::to_string(prepared.mesh.num_vertices()) + " x 3");
     }
+    write(plan.rest, [&](const std::string& path) {
+        write_medit(path, prepared.mesh.vertices, prepared.mesh.simplices);
+    });
+    write(plan.flags,
+          [&](const std::string& path) { write_facet_flags(path, prepared.output_flags()); });
+    write(plan.out,
+          [&](const std::string& path) { write_medit(path, positions, prepared.mesh.simplices); });
+    write(plan.vtu, [&](const std::string& path) {
+        write_polycube_vtu(path, prepared, positions, verification);
+    });
+    write(plan.png, [&](const std::string& path) {
+        write_polycube_png(
+            path, prepared, positions, verification,
+            std::string("PolyCube, ") + (verification.passed ? "verified" : "NOT verified"));
+    });
     if (!plan.report.empty()) {
         report["preparation"] = polycube_preparation_json(prepared);
         report["verification"] = polycube_verification_json(verification);
         report["outputs"] = {{"mesh", plan.out}, {"rest", plan.rest}, {"flags", plan.flags}};
-        write_json(plan.report, report);
+        write(plan.report, [&](const std::string& path) { write_json(path, report); });
     }
+}
+
+namespace {
+
+nlohmann::json rounds_json(const std::vector<BoundRound>& rounds) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const BoundRound& r : rounds) {
+        out.push_back({{"bound", std::isfinite(r.bound) ? nlohmann::json(r.bound) : "inf"},
+                       {"max_distortion", r.max_distortion},
+                       {"success", r.success},
+                       {"iterations", r.iterations},
+                       {"time", r.time}});
+    }
+    return out;
+}
+
+}  // namespace
+
+int run_polycube_command(const PolycubeArguments& arguments) {
+    Stopwatch total;
+    const PolycubePlan plan = check_polycube_arguments(arguments);
+    OutputPlan outputs(arguments.force);
+    outputs.input("--mesh", arguments.mesh);
+    outputs.input("--labels", arguments.labels);
+    outputs.input("--label-surface", arguments.label_surface);
+    outputs.file("--out", plan.out);
+    outputs.file("--out (rest mesh)", plan.rest);
+    outputs.file("--out (flags)", plan.flags);
+    outputs.file("--vtu", plan.vtu);
+    outputs.file("--png", plan.png);
+    outputs.file("--report", plan.report);
+    outputs.check();
+    const Logger logger = stderr_logger(plan.quiet);
+
+    set_activity("reading --mesh " + plan.mesh);
+    const PreparedPolycube prepared = read_polycube_input(plan, logger);
+    std::cout << "sa polycube: " << prepared.input.num_simplices() << " tetrahedra ("
+              << prepared.mesh.num_simplices() << " after " << prepared.splits.edge_splits
+              << " edge and " << prepared.splits.face_splits << " face splits), "
+              << prepared.charts.size() << " charts, labels " << prepared.label_source << " ("
+              << plan.mesh << ")\n";
+    PolycubeSolveOptions options;
+    options.bound = plan.bound;
+    options.optimal_bound = plan.optimal_bound;
+    options.max_time = plan.max_time;
+    options.threads = plan.threads;
+    set_activity("solving (a PolyCube map of " + std::to_string(prepared.mesh.num_simplices()) +
+                 " tetrahedra)");
+    const PolycubeSolve solve = solve_polycube(prepared, options, logger);
+
+    nlohmann::json report;
+    report["command"] = "polycube";
+    report["success"] = solve.success;
+    report["message"] = solve.message;
+    report["start"] = {{"kind", "cube cover"}, {"quality", quality_json(solve.start_quality)}};
+    report["bound"] = std::isfinite(plan.bound) ? nlohmann::json(plan.bound) : "inf";
+    report["optimal_bound"] = plan.optimal_bound;
+    report["reached_bound"] =
+        std::isfinite(solve.bound) ? nlohmann::json(solve.bound) : nlohmann::json("inf");
+    report["rounds"] = rounds_json(solve.rounds);
+    report["solve"] = {{"assembled", solve.solve.assembled},
+                       {"final_assembly", solve.solve.final_assembly},
+                       {"assembly_iterations", solve.solve.newton.num_steps()},
+                       {"assembly_stop", solve.solve.assembly_stop},
+                       {"vertex_stage_ran", solve.solve.vertex_stage_ran},
+                       {"vertex_stage_iterations", solve.solve.vertex_stage.num_steps()},
+                       {"vertex_stage_note", solve.solve.vertex_stage_note},
+                       {"driver_message", solve.solve.message}};
+    report["times"] = {{"cube_cover", solve.cube_cover_seconds},
+                       {"solve", solve.solve_seconds},
+                       {"verify", solve.verify_seconds},
+                       {"total", total.seconds()}};
+    report["peak_memory_gb"] = peak_memory_gb();
+    set_activity("writing the outputs");
+    write_polycube_outputs(plan, prepared, solve.positions, solve.verification, report, &outputs);
+    outputs.commit();
+    std::cout << solve.message << "\n"
+              << "conformal distortion max " << solve.verification.quality.conformal.max
+              << ", mean " << solve.verification.quality.conformal.mean << "; isometric max "
+              << solve.verification.quality.isometric.max << "; "
+              << (solve.rounds.empty() ? std::string()
+                                       : std::to_string(solve.rounds.size()) + " rounds, ")
+              << "time " << total.seconds() << " s\n"
+              << "wrote " << plan.out << ", " << plan.rest << ", " << plan.flags << "\n";
+    return solve.success ? kExitVerified : kExitNotVerified;
 }
 
 }  // namespace sa::cli

@@ -1,17 +1,13 @@
 #pragma once
-// `sa polycube` (issue 21): a PolyCube map of a tetrahedral mesh. Prepared here: the arguments,
-// their checks, and the steps before and after the solve. NOT registered in sa_main.cpp yet: the
-// solve is a configuration of the Simplex Assembly engine (issue 20), wired when it lands:
+// `sa polycube` (issue 21): a PolyCube map of a tetrahedral mesh. The arguments, their checks,
+// and the steps before and after the solve (frontends/polycube/polycube_solve.h: a configuration
+// of the Simplex Assembly driver and engine):
 //
 //   const PolycubePlan plan = check_polycube_arguments(arguments);     // bad options: throws
 //   const PreparedPolycube prepared = read_polycube_input(plan, logger);
-//   Eigen::MatrixXd start = cube_cover_map(prepared.mesh, prepared.boundary,
-//                                          prepared.charts).positions;
-//   ... the engine: planarity and sliding terms, the 3D angle barriers, the conformal barrier
-//       with plan.bound or the optimal-bound loop, within plan.max_time ...
-//   const PolycubeVerification v = verify_polycube(prepared.layout(), positions,
-//                                                  prepared.input_volume);
-//   write_polycube_outputs(plan, prepared, positions, v, report);      // exit v.passed ? 0 : 1
+//   const PolycubeSolve solve = solve_polycube(prepared, options, logger);
+//   write_polycube_outputs(plan, prepared, solve.positions, solve.verification, report);
+//   // exit 0 only when solve.success (the driver's and verify_polycube()'s checks)
 //
 //   sa polycube --mesh TETS [--labels FLAGS | --labels LABELS.txt --label-surface SURFACE.obj]
 //               [--bound K | --optimal-bound] --out OUT.mesh [--vtu V.vtu] [--png P.png]
@@ -22,6 +18,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "frontends/cli/output_plan.h"
 #include "frontends/polycube/polycube_preparation.h"
 
 namespace sa::cli {
@@ -62,8 +59,14 @@ PreparedPolycube read_polycube_input(const PolycubePlan& plan, const Logger& log
 /// Writes the map's files: OUT.mesh with OUT.rest.mesh and OUT.flags, and the --vtu, --png and
 /// --report ones asked for. `report` receives the preparation and verification sections (under
 /// "preparation" and "verification") before it is written; the caller adds the solve's.
+/// With `staging`, every file is written under its staged name (output_plan.h) and the caller
+/// commits; without, in place.
 void write_polycube_outputs(const PolycubePlan& plan, const PreparedPolycube& prepared,
                             const Eigen::MatrixXd& positions,
-                            const PolycubeVerification& verification, nlohmann::json report);
+                            const PolycubeVerification& verification, nlohmann::json report,
+                            OutputPlan* staging = nullptr);
+
+/// Runs `sa polycube`: returns the exit status (cli_support.h), throws on bad input.
+int run_polycube_command(const PolycubeArguments& arguments);
 
 }  // namespace sa::cli

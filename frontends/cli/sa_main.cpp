@@ -3,6 +3,7 @@
 //   sa demo ...   the paper's Figure 1 in miniature
 //   sa param ...  a planar parameterization of a disk-topology surface
 //   sa seamless   a seamless parameterization from a frame field (integrable by Simplex Assembly)
+//   sa polycube   a PolyCube map of a tetrahedral mesh with a labelled boundary
 //   sa subdivide  Loop subdivision (to build large test meshes)
 // Exit status (cli_support.h, README.md): 0 verified success, 1 a result that did not pass
 // verification or a problem whose handles rule out any solution (geometry/handle_feasibility.h),
@@ -23,6 +24,7 @@
 #include "frontends/cli/map_command.h"
 #include "frontends/cli/out_of_memory.h"
 #include "frontends/cli/param_command.h"
+#include "frontends/cli/polycube_command.h"
 #include "frontends/cli/runtime_settings.h"
 #include "frontends/cli/seamless_command.h"
 #include "geometry/handle_feasibility.h"
@@ -72,6 +74,8 @@ int run(int argc, char** argv) {
     CLI::App* param = sa::cli::add_param_command(app, param_arguments);
     sa::cli::SeamlessArguments seamless_arguments;
     CLI::App* seamless = sa::cli::add_seamless_command(app, seamless_arguments);
+    sa::cli::PolycubeArguments polycube_arguments;
+    CLI::App* polycube = sa::cli::add_polycube_command(app, polycube_arguments);
     sa::cli::SubdivideArguments subdivide_arguments;
     CLI::App* subdivide = sa::cli::add_subdivide_command(app, subdivide_arguments);
 
@@ -103,6 +107,7 @@ int run(int argc, char** argv) {
         if (demo->parsed()) return sa::cli::run_demo_command(demo_arguments);
         if (param->parsed()) return sa::cli::run_param_command(param_arguments);
         if (seamless->parsed()) return sa::cli::run_seamless_command(seamless_arguments);
+        if (polycube->parsed()) return sa::cli::run_polycube_command(polycube_arguments);
         if (subdivide->parsed()) return sa::cli::run_subdivide_command(subdivide_arguments);
     } catch (const std::bad_alloc&) {
         return report("error", sa::cli::out_of_memory_message(), sa::cli::kExitOutOfMemory);
@@ -122,6 +127,14 @@ int run(int argc, char** argv) {
         }
         return report("internal error", e.what(), sa::cli::kExitInternalError);
     } catch (const std::exception& e) {
+        // oneTBB reports a worker it cannot start as a std::runtime_error
+        // "pthread_create has failed: Resource temporarily unavailable" (EAGAIN), not a
+        // system_error: under an address-space limit that is running out of memory too.
+        const std::string what = e.what();
+        if (what.rfind("pthread_create has failed", 0) == 0 && sa::cli::memory_limit() > 0) {
+            return report("error", sa::cli::out_of_memory_message() + " (" + what + ")",
+                          sa::cli::kExitOutOfMemory);
+        }
         return report("internal error", e.what(), sa::cli::kExitInternalError);
     }
     return report("error", "a command is required: " + command_list(app), sa::cli::kExitBadInput);

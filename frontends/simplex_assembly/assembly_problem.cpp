@@ -1,6 +1,7 @@
 #include "frontends/simplex_assembly/assembly_problem.h"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "energies/affine_point_energies.h"
@@ -46,7 +47,32 @@ AssemblyProblem<D>::AssemblyProblem(const AssemblyInput<D>& in,
         build_full(in);
     }
     add_energies_and_constraints(in);
-    for (Index s : in.anchored_simplices) engine_->fix_simplex(s);
+    // A plugin whose terms fix the rigid motion (PolyCube's axis-aligned planes) would conflict
+    // with an anchor's fixed linear part: the anchors then keep their translations only.
+    bool plugins_fix_motion = false;
+    for (const auto& plugin : in.plugins) plugins_fix_motion |= plugin->removes_rigid_motion();
+    // Its scale stays, though: a conformal barrier does not see the map's scale and E~_assembly
+    // shrinks with it, so without it the assembly drifted towards a point (pente, 200 iterations
+    // at lambda_max: a map 3e-9 across). One row, trace(A_s) = D |det A_s^0|^(1/D) (D times the
+    // start similarity's scale: the trace of A_s once it is that similarity without rotation).
+    std::vector<LinearPartConstraint<D, 1>> scale_rows;
+    for (Index s : in.anchored_simplices) {
+        if (!plugins_fix_motion || variant_ == Variant::kVertex) {
+            engine_->fix_simplex(s);
+            continue;
+        }
+        if (engine_->has_translation(s)) {
+            for (Index v : engine_->translation_variables(s)) engine_->problem().set_fixed(v);
+        }
+        LinearPartConstraint<D, 1> row;
+        row.simplex = s;
+        row.rows.coefficients.setZero();
+        for (int i = 0; i < D; ++i) row.rows.coefficients(0, i + D * i) = 1.0;
+        row.rows.rhs[0] = D * std::pow(std::abs(in.start_linear[s].determinant()), 1.0 / D);
+        scale_rows.push_back(row);
+    }
+    if (!scale_rows.empty())
+        engine_->template add_linear_part_constraints<1>("anchor scale", scale_rows);
 }
 
 template <int D>
@@ -74,6 +100,7 @@ void AssemblyProblem<D>::add_energies_and_constraints(const AssemblyInput<D>& in
         }
         engine_->template add_linear_part_constraints<1>("edge constraints", rows);
     }
+    for (const auto& plugin : in.plugins) plugin->add_assembly_terms(*engine_, in.plugin_stage);
 }
 
 template <int D>

@@ -14,14 +14,16 @@
 //         must agree, copies of a handle reach its target.
 // Then, in every variant, the per-simplex energies (the options' mu E_m + E_C, then the
 // problem's own), the boundary-angle barrier E_theta when asked (r-SA and f-SA), and the user's
-// linear constraints on linear parts. Anchored simplices (one per connected part without
-// handles) keep their linear part, translation and copies fixed, which removes the global motion
-// such a part would otherwise have.
+// linear constraints on linear parts, and the plugins' terms. Anchored simplices (one per
+// connected part without handles) keep their linear part, translation and copies fixed, which
+// removes the global motion such a part would otherwise have (in r-SA and f-SA, when a plugin
+// removes_rigid_motion(), only the translation and, as one assembly row, the trace of A).
 
 #include <memory>
 #include <utility>
 #include <vector>
 
+#include "frontends/simplex_assembly/assembly_plugin.h"
 #include "frontends/simplex_assembly/engine.h"
 #include "frontends/simplex_assembly/simplex_assembly_options.h"
 #include "frontends/simplex_assembly/simplex_term.h"
@@ -62,6 +64,10 @@ struct AssemblyInput {
     std::vector<std::shared_ptr<const SimplexTerm<D>>> energies;
     /// The problem's linear constraints.
     std::vector<EdgeRow<D>> constraints;
+    /// The problem's plugins (assembly_plugin.h), added after every other term, and what they
+    /// are told (kind kAssembly; its pointers refer to the prepared problem).
+    std::vector<std::shared_ptr<const AssemblyPlugin<D>>> plugins;
+    PluginStage<D> plugin_stage;
 };
 
 template <int D>
@@ -88,7 +94,8 @@ class AssemblyProblem {
     void build_full(const AssemblyInput<D>& in);
     void build_vertex(const AssemblyInput<D>& in);
     void add_boundary_angle_terms(const AssemblyInput<D>& in);
-    /// The per-simplex energies, E_theta and the linear constraints, in that order.
+    /// The per-simplex energies, E_theta, the linear constraints and the plugins' terms, in that
+    /// order.
     void add_energies_and_constraints(const AssemblyInput<D>& in);
 
     Variant variant_;

@@ -82,7 +82,8 @@ OptimalBound optimal_bound(MappingProblem problem, SimplexAssemblyOptions option
         record.bound = options.builtin_energy ? options.bound : kInfinity;
         record.max_distortion = r.verification.max_distortion;
         record.bounds = r.verification.bounds;
-        record.success = r.success && r.verification.within_bound();
+        record.success =
+            r.success && r.verification.within_bound() && (!rounds.accept || rounds.accept(r));
         record.iterations = r.newton.num_steps() + r.vertex_stage.num_steps();
         record.time = round_watch.seconds();
         result.rounds.push_back(record);

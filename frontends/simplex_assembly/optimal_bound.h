@@ -13,6 +13,7 @@
 // DistortionBarrier. The mapping energy E_m keeps measuring the change from problem.reference
 // (when set) in every round. One loop for parameterization, deformation and PolyCube.
 
+#include <functional>
 #include <vector>
 
 #include "frontends/simplex_assembly/simplex_assembly.h"
@@ -46,6 +47,9 @@ struct OptimalBoundOptions {
     /// a small margin keeps the previous result a feasible start (the submesh mode's regions then
     /// go straight to the vertex stage, with the barrier at its steepest on that simplex).
     double margin = 0.0;
+    /// A front-end's own check of a round's result beyond the driver's verification (PolyCube:
+    /// verify_polycube() on its positions); a round it rejects counts as one that did not verify.
+    std::function<bool(const SimplexAssemblyResult&)> accept;
 };
 
 struct OptimalBound {

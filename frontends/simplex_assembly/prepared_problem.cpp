@@ -79,6 +79,16 @@ void check_input(const MappingProblem& p, const SimplexAssemblyOptions& options,
                 "have dimension " + std::to_string(d));
         }
     }
+    for (std::size_t k = 0; k < p.plugins.size(); ++k) {
+        if (p.plugins[k] == nullptr)
+            throw InvalidArgumentError(src + ": plugin " + std::to_string(k) + " is null");
+        if (p.plugins[k]->dimension() != d) {
+            throw InvalidArgumentError(src + ": plugin '" + p.plugins[k]->name() +
+                                       "' is for simplices of dimension " +
+                                       std::to_string(p.plugins[k]->dimension()) +
+                                       ", the mesh's have dimension " + std::to_string(d));
+        }
+    }
     if (!options.builtin_energy && p.energies.empty()) {
         throw InvalidArgumentError(
             src +
@@ -309,6 +319,12 @@ std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
     for (const auto& energy : input.energies)
         in.energies.push_back(std::static_pointer_cast<const SimplexTerm<D>>(energy));
     in.constraints = edge_rows<D>(input, p->mesh, p->topology, p->scale);
+    for (const auto& plugin : input.plugins)
+        in.plugins.push_back(std::static_pointer_cast<const AssemblyPlugin<D>>(plugin));
+    in.plugin_stage.mesh = &p->mesh;
+    in.plugin_stage.frames = &p->frames;
+    in.plugin_stage.scale = p->scale;
+    in.plugin_stage.map_center = p->map_center;
 
     // Eq. 6: handles at their targets, one vertex of each anchored simplex at its start image.
     p->pinned = p->start;
@@ -336,7 +352,11 @@ double mesh_energy(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions
         boundary += boundary_angle_barrier(theta);
     double simplices = 0.0;
     for (const auto& energy : p.assembly.energies) simplices += energy->sum(A);
-    return boundary + simplices;
+    PluginStage<D> stage = p.assembly.plugin_stage;
+    stage.kind = PluginStage<D>::Kind::kVertex;
+    double plugins = 0.0;
+    for (const auto& plugin : p.assembly.plugins) plugins += plugin->energy(positions, stage);
+    return boundary + simplices + plugins;
 }
 
 template <int D>

@@ -59,9 +59,9 @@ std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
                                                     StageTimes& times);
 
 /// The energy of the per-simplex terms (the options' mu E_m + E_C and the problem's own; + E_theta
-/// of the boundary fans, when asked) of the map `positions` (normalized): +inf unless every
-/// simplex is positively oriented (against its rest orientation), under every bound, and every
-/// boundary angle sum below 2 pi.
+/// of the boundary fans, when asked; + the plugins' energy()) of the map `positions`
+/// (normalized): +inf unless every simplex is positively oriented (against its rest orientation),
+/// under every bound, every boundary angle sum below 2 pi and every plugin barrier finite.
 template <int D>
 double mesh_energy(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions);
 

@@ -75,17 +75,19 @@ void start_from_initial_map(PreparedProblem<D>& prepared, const SimplexAssemblyO
     Eigen::MatrixXd candidate = prepared.start;
     for (std::size_t k = 0; k < in.handles.size(); ++k)
         candidate.row(in.handles[k]) = in.targets[k].transpose();
-    VertexStage from_initial =
-        run_vertex_stage<D>(prepared.mesh, prepared.frames, in.energies, candidate, fixed,
-                            with_time_left(options, budget), observer.logger,
-                            VertexStageTerms<D>{in.fans, in.constraints});
+    VertexStage from_initial = run_vertex_stage<D>(
+        prepared.mesh, prepared.frames, in.energies, candidate, fixed,
+        with_time_left(options, budget), observer.logger,
+        VertexStageTerms<D>{in.fans, in.constraints, in.plugins, in.plugin_stage});
     if (from_initial.ran) {
         from_initial.note += " (from the initial map: the assembly's recovered mesh was not valid)";
         recovered = from_initial.positions;
         vertex = std::move(from_initial);
         return;
     }
-    if (options.bound < kInfinity || !in.fans.empty() || !in.constraints.empty()) return;
+    if (options.bound < kInfinity || !in.fans.empty() || !in.constraints.empty() ||
+        !in.plugins.empty())
+        return;
     for (const auto& energy : in.energies)
         if (energy->bounds_a_distortion() && energy->bound() < kInfinity) return;
     const MapQuality q = map_quality<D>(linear_parts<D>(prepared.mesh, prepared.frames, candidate),
@@ -148,6 +150,16 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
         Stopwatch check;
         Eigen::MatrixXd positions =
             prepared.recovery().recover(assembly.linear_parts(x), prepared.pinned);
+        // The plugins' constraint sets: the mesh is handed over as the vertex stage will start.
+        PluginStage<D> stage = in.plugin_stage;
+        stage.kind = PluginStage<D>::Kind::kVertex;
+        stage.fixed = &prepared.recovery_fixed;
+        for (const auto& plugin : in.plugins) {
+            if (!plugin->project(positions, stage)) {
+                result.times.recovery += check.seconds();
+                return std::string();
+            }
+        }
         const double recovered_energy = mesh_energy<D>(prepared, positions);
         const bool ok = options.until_valid
                             ? std::isfinite(recovered_energy)
@@ -181,13 +193,21 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
         result.vertex_stage_note = "skipped: the time limit was reached";
     } else if (options.vertex_stage && !options.until_valid) {
         // The anchored simplices keep all their vertices: a free part has no rigid motion left.
+        // A plugin that fixes the rigid motion itself (PolyCube's planes) frees them.
+        bool plugins_fix_motion = false;
+        for (const auto& plugin : in.plugins) plugins_fix_motion |= plugin->removes_rigid_motion();
         std::vector<unsigned char> fixed = prepared.recovery_fixed;
         for (Index s : in.anchored_simplices) {
             for (int k = 0; k <= D; ++k) fixed[mesh.simplices(s, k)] = 1;
         }
-        VertexStage vertex = run_vertex_stage<D>(mesh, frames, in.energies, recovered, fixed,
-                                                 with_time_left(options, budget), observer.logger,
-                                                 VertexStageTerms<D>{in.fans, in.constraints});
+        if (plugins_fix_motion) {
+            fixed.assign(fixed.size(), 0);
+            for (Index h : in.handles) fixed[h] = 1;
+        }
+        VertexStage vertex = run_vertex_stage<D>(
+            mesh, frames, in.energies, recovered, fixed, with_time_left(options, budget),
+            observer.logger,
+            VertexStageTerms<D>{in.fans, in.constraints, in.plugins, in.plugin_stage});
         if (!vertex.ran)
             start_from_initial_map<D>(prepared, options, budget, observer, fixed, recovered,
                                       vertex);
@@ -241,7 +261,8 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
     Stopwatch stage;
     verify_result<D>(input, options, result, &prepared->topology);
     // The last resort (untangle_fallback.h): no valid map, but the handles are where they belong.
-    if (!result.success && options.untangle_fallback &&
+    // The fallback ignores the plugins' terms (assembly_plugin.h): not for problems with them.
+    if (!result.success && options.untangle_fallback && input.plugins.empty() &&
         result.verification.handle_error <= result.verification.handle_tolerance &&
         untangle_fallback<D>(*prepared, options, budget, observer, result)) {
         for (Index v = 0; v < input.mesh.num_vertices(); ++v) {

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "frontends/simplex_assembly/assembly_plugin.h"
 #include "frontends/simplex_assembly/engine_options.h"
 #include "frontends/simplex_assembly/simplex_assembly_options.h"
 #include "frontends/simplex_assembly/simplex_term.h"
@@ -65,6 +66,9 @@ struct MappingProblem {
     std::vector<std::shared_ptr<const SimplexTermBase>> energies;
     /// The problem's own linear assembly constraints.
     std::vector<EdgeConstraint> constraints;
+    /// A front-end's own assembly terms and multi-simplex barriers (assembly_plugin.h: each an
+    /// AssemblyPlugin<d>), added in the assembly stage and the vertex stage. Full mode only.
+    std::vector<std::shared_ptr<const AssemblyPluginBase>> plugins;
 };
 
 /// A problem's own barrier on a distortion, measured on the output.

@@ -114,6 +114,15 @@ SimplexAssemblyResult solve_region(const MappingProblem& input, const MeshTopolo
 
 template <int D>
 SolveMode choose_mode(const PreparedProblem<D>& p, const SimplexAssemblyOptions& options) {
+    if (!p.input->plugins.empty()) {
+        // A plugin's terms cannot be restricted to a region yet (assembly_plugin.h).
+        if (options.mode == SolveMode::kSubmesh) {
+            throw InvalidArgumentError("plugin '" + p.input->plugins.front()->name() +
+                                       "': problems with plugins run in the full mode only "
+                                       "(mode full or auto)");
+        }
+        return SolveMode::kFull;
+    }
     if (p.input->boundary_injective) {
         if (options.mode == SolveMode::kSubmesh) {
             throw InvalidArgumentError(

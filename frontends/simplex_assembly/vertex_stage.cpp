@@ -14,11 +14,22 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
     VertexStage result;
     result.positions = start;
     const Index nv = mesh.num_vertices();
+    PluginStage<D> stage = terms.plugin_stage;
+    stage.kind = PluginStage<D>::Kind::kVertex;
+    stage.fixed = &fixed;
+    for (const auto& plugin : terms.plugins) {
+        // The plugin's constraint set first (PolyCube: every chart on its plane).
+        if (!plugin->project(result.positions, stage)) {
+            result.positions = start;
+            result.note = "skipped: " + plugin->name() + " cannot project the start";
+            return result;
+        }
+    }
     std::vector<std::array<Index, D + 1>> simplices(mesh.num_simplices());
     for (Index s = 0; s < mesh.num_simplices(); ++s)
         for (int k = 0; k <= D; ++k) simplices[s][k] = mesh.simplices(s, k);
     SimplexAssemblyEngine<D> engine = SimplexAssemblyEngine<D>::vertex_positions(
-        start.leftCols(D), std::move(simplices), frames.corners, frames.edge_inverse);
+        result.positions.leftCols(D), std::move(simplices), frames.corners, frames.edge_inverse);
     // Simplices whose vertices are all fixed keep a constant energy: they are left out.
     std::vector<Index> moving;
     for (Index s = 0; s < mesh.num_simplices(); ++s) {
@@ -72,10 +83,16 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
         }
         engine.template add_linear_constraints<2 * D, 1>("edge constraints", rows);
     }
+    for (const auto& plugin : terms.plugins) plugin->add_vertex_terms(engine, stage);
     for (Index v = 0; v < nv; ++v)
         if (fixed[v]) engine.fix_vertex(v);
     if (!std::isfinite(engine.problem().value())) {
-        result.note = "skipped: the recovered mesh has an inverted simplex or one over the bound";
+        result.positions = start;
+        result.note = terms.plugins.empty()
+                          ? "skipped: the recovered mesh has an inverted simplex or one over the "
+                            "bound"
+                          : "skipped: the recovered mesh (projected by the plugins) has an "
+                            "inverted simplex, one over the bound, or a plugin barrier at +inf";
         return result;
     }
     // A simplex whose e^{s d} is beyond the barrier's exponent cap (barrier.h; e^500) makes every
@@ -85,7 +102,8 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
     Index beyond_cap = 0;
     for (Index s : moving) {
         Eigen::Matrix<double, D, D + 1> corners;
-        for (int k = 0; k <= D; ++k) corners.col(k) = start.row(mesh.simplices(s, k)).transpose();
+        for (int k = 0; k <= D; ++k)
+            corners.col(k) = result.positions.row(mesh.simplices(s, k)).transpose();
         const Mat<D> A = linear_part<D>(frames, s, corners);
         for (const auto& energy : energies) {
             if (energy->beyond_exponent_cap(A)) {
@@ -97,6 +115,7 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
     if (beyond_cap > 0) {
         result.note = "skipped: " + std::to_string(beyond_cap) +
                       " simplices are so distorted that the barrier cannot rank the others";
+        result.positions = start;
         return result;
     }
     AssemblyHooks hooks;

@@ -41,6 +41,11 @@ struct VertexStageTerms {
     std::vector<BoundaryFan> fans;
     /// The problem's linear constraints (normalized units).
     std::vector<EdgeRow<D>> constraints;
+    /// The problem's plugins: each projects the start (a start one refuses is not run from) and
+    /// adds its vertex-stage terms; `plugin_stage` is what they are told (kind, fixed: set by
+    /// run_vertex_stage).
+    std::vector<std::shared_ptr<const AssemblyPlugin<D>>> plugins = {};
+    PluginStage<D> plugin_stage = {};
 };
 
 /// `start` #V x D in the driver's normalized coordinates; `fixed` flags handles and anchors;

@@ -7,9 +7,11 @@
 #include <fstream>
 
 #include "../geometry/polycube_fixtures.h"
+#include "frontends/cli/cli_support.h"
 #include "frontends/polycube/polycube_output.h"
 #include "geometry/cube_cover.h"
 #include "geometry/io/medit_io.h"
+#include "geometry/io/mesh_file.h"
 #include "geometry/io/polycube_labels_io.h"
 #include "optim/errors.h"
 
@@ -133,6 +135,43 @@ TEST_F(PolycubeCommand, InputAndOutputsAroundTheSolve) {
     EXPECT_EQ(report["verification"]["passed"], true);
     EXPECT_EQ(report["verification"]["quality"]["inverted"], 0);
     EXPECT_EQ(report["outputs"]["flags"], path("o.flags"));
+}
+
+// `sa polycube` end to end on a generated bent L (its cube-cover start is not the rest shape):
+// exit 0, and every output file says the same as the verification of what it holds.
+TEST_F(PolycubeCommand, EndToEndOnAGeneratedMesh) {
+    const SimplicialMesh mesh =
+        testing::bent(testing::voxel_tetrahedra(testing::l_shape(), 2), 0.12);
+    write_medit(path("bent.mesh"), mesh.vertices, mesh.simplices);
+    CLI::App app;
+    PolycubeArguments arguments;
+    add_polycube_command(app, arguments);
+    std::vector<std::string> args = {"polycube",     "--mesh",          path("bent.mesh"), "--out",
+                                     path("o.mesh"), "--report",        path("o.json"),    "--vtu",
+                                     path("o.vtu"),  "--optimal-bound", "--quiet"};
+    std::reverse(args.begin(), args.end());
+    app.parse(args);
+    ASSERT_EQ(run_polycube_command(arguments), kExitVerified);
+    for (const char* name : {"o.mesh", "o.rest.mesh", "o.flags", "o.vtu", "o.json"})
+        EXPECT_TRUE(fs::exists(path(name))) << name;
+    // The written map, read back, passes verify_polycube against the written rest mesh.
+    const MeshFile rest = read_mesh_file(path("o.rest.mesh"));
+    const MeshFile out = read_mesh_file(path("o.mesh"));
+    ASSERT_EQ(rest.mesh.simplices, out.mesh.simplices);
+    PolycubeLabelInput labels;
+    labels.flags = path("o.flags");
+    const PreparedPolycube again = prepare_polycube(rest.mesh, path("o.rest.mesh"), labels);
+    ASSERT_EQ(again.mesh.num_vertices(), rest.mesh.num_vertices());  // nothing left to split
+    const PolycubeVerification v =
+        verify_polycube(again.layout(), out.mesh.vertices, again.input_volume);
+    EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
+    std::ifstream in(path("o.json"));
+    const nlohmann::json report = nlohmann::json::parse(in);
+    EXPECT_EQ(report["success"], true);
+    EXPECT_EQ(report["verification"]["passed"], true);
+    EXPECT_FALSE(report["rounds"].empty());
+    // Existing outputs without --force: exit 2 by exception, nothing rewritten.
+    EXPECT_THROW(run_polycube_command(arguments), InputError);
 }
 
 }  // namespace

@@ -1,0 +1,235 @@
+#include "frontends/polycube/polycube_solve.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+#include <tuple>
+
+#include "energies/polycube_constraints.h"
+#include "frontends/polycube/boundary_angle_sums.h"
+#include "frontends/polycube/polycube_terms.h"
+#include "geometry/cube_cover.h"
+#include "geometry/rest_frames.h"
+#include "optim/errors.h"
+#include "optim/stopwatch.h"
+
+namespace sa {
+
+namespace {
+
+/// The PolyCube terms of polycube_solve.h as a plugin of the mesh driver.
+class PolycubePlugin final : public AssemblyPlugin<3> {
+  public:
+    PolycubePlugin(const PreparedPolycube& prepared, double angle_weight)
+        : AssemblyPlugin<3>("polycube"), p_(prepared), weight_(angle_weight) {
+        build_planes();
+    }
+
+    void add_assembly_terms(SimplexAssemblyEngine<3>& engine,
+                            const PluginStage<3>&) const override {
+        using Engine = SimplexAssemblyEngine<3>;
+        if (engine.layout() != Engine::Layout::kLinearParts) {
+            throw InvalidArgumentError(
+                "polycube: the assembly stage takes the linear parts (r-SA or f-SA), not v-SA");
+        }
+        const PlanarityElements planarity = planarity_elements(p_);
+        std::vector<LinearPartConstraint<3, 2>> rows;
+        rows.reserve(planarity.rows.size());
+        for (std::size_t k = 0; k < planarity.rows.size(); ++k)
+            rows.push_back({planarity.tet[k], planarity.rows[k]});
+        engine.add_linear_part_constraints<2>("polycube planarity", rows);
+
+        // The angle barriers in A-form: vec(A_t) of each tetrahedron of the fan or star.
+        auto a_form = [&](const char* name) {
+            return [&engine, name, this](auto energy, auto tets) {
+                constexpr int K = std::tuple_size_v<typename decltype(tets)::value_type>;
+                std::vector<std::array<Index, 9 * K>> elements;
+                elements.reserve(tets.size());
+                for (const auto& fan : tets) {
+                    std::array<Index, 9 * K> e;
+                    for (int k = 0; k < K; ++k) {
+                        const auto linear = engine.linear_variables(fan[k]);
+                        std::copy(linear.begin(), linear.end(), e.begin() + 9 * k);
+                    }
+                    elements.push_back(e);
+                }
+                engine.add_barrier(std::string(name) + " " + std::to_string(K), std::move(energy),
+                                   std::move(elements), weight_);
+            };
+        };
+        auto none = [](auto, auto) {};
+        for_each_dihedral_term(p_, a_form("dihedral-angle sums, A-form"), none);
+        std::vector<Index> skipped;
+        for_each_solid_angle_term(p_, a_form("solid-angle sums, A-form"), none, &skipped);
+    }
+
+    bool project(Eigen::MatrixXd& positions, const PluginStage<3>&) const override {
+        std::vector<double> sum(plane_axis_.size(), 0.0);
+        std::vector<Index> count(plane_axis_.size(), 0);
+        for (const auto& [v, plane] : members_) {
+            sum[plane] += positions(v, plane_axis_[plane]);
+            ++count[plane];
+        }
+        for (const auto& [v, plane] : members_)
+            positions(v, plane_axis_[plane]) = sum[plane] / double(count[plane]);
+        return positions.allFinite();
+    }
+
+    void add_vertex_terms(SimplexAssemblyEngine<3>& engine, const PluginStage<3>&) const override {
+        // Sliding: the coordinate along each of a vertex's planes' axes keeps its value. The
+        // angle barriers are not needed here: with every chart exactly in its plane, a boundary
+        // edge's dihedral sum can only be pi (inside a chart) or pi/2, 3 pi/2 (between two), plus
+        // multiples of 2 pi, and a vertex's solid-angle sum likewise a multiple of pi/2; both are
+        // continuous while no tetrahedron degenerates, which E_C prevents. So they keep the
+        // values of the start, which energy() checked below their limits before the hand-over.
+        for (const auto& [v, plane] : members_)
+            engine.problem().set_fixed(engine.vertex_variables(v)[plane_axis_[plane]]);
+    }
+
+    double energy(const Eigen::MatrixXd& positions, const PluginStage<3>&) const override {
+        double e = 0.0;
+        for (const double theta : dihedral_angle_sums(p_.fans, positions)) {
+            if (!(theta < 2.0 * M_PI)) return kInfinity;
+            e += 1.0 / (2.0 * M_PI - theta);
+        }
+        for (const double theta : solid_angle_sums(p_.stars, positions)) {
+            if (!(theta < 4.0 * M_PI)) return kInfinity;
+            e += 1.0 / (4.0 * M_PI - theta);
+        }
+        return weight_ * e;
+    }
+
+    bool removes_rigid_motion() const override { return true; }
+
+  private:
+    /// Planes: the charts of one axis that share a vertex lie in one plane (union-find).
+    void build_planes() {
+        const int nc = p_.charts.size();
+        std::vector<int> parent(nc);
+        std::iota(parent.begin(), parent.end(), 0);
+        auto find = [&](int c) {
+            while (parent[c] != c) c = parent[c] = parent[parent[c]];
+            return c;
+        };
+        const std::vector<SlidingVertex> sliding = sliding_vertices(p_);
+        for (const SlidingVertex& s : sliding) {
+            for (std::size_t i = 0; i < s.charts.size(); ++i) {
+                for (std::size_t j = i + 1; j < s.charts.size(); ++j) {
+                    if (label_axis(p_.charts.label[s.charts[i]]) ==
+                        label_axis(p_.charts.label[s.charts[j]]))
+                        parent[find(s.charts[i])] = find(s.charts[j]);
+                }
+            }
+        }
+        std::vector<int> plane_of_root(nc, -1);
+        for (int c = 0; c < nc; ++c) {
+            const int r = find(c);
+            if (plane_of_root[r] < 0) {
+                plane_of_root[r] = int(plane_axis_.size());
+                plane_axis_.push_back(label_axis(p_.charts.label[c]));
+            }
+        }
+        for (const SlidingVertex& s : sliding) {
+            std::vector<int> planes;
+            for (const int c : s.charts) planes.push_back(plane_of_root[find(c)]);
+            std::sort(planes.begin(), planes.end());
+            planes.erase(std::unique(planes.begin(), planes.end()), planes.end());
+            for (const int plane : planes) members_.push_back({s.vertex, plane});
+        }
+    }
+
+    const PreparedPolycube& p_;
+    double weight_;
+    std::vector<int> plane_axis_;                 ///< per plane: its axis
+    std::vector<std::pair<Index, int>> members_;  ///< (boundary vertex, one of its planes)
+};
+
+}  // namespace
+
+std::shared_ptr<const AssemblyPlugin<3>> polycube_plugin(const PreparedPolycube& prepared,
+                                                         double angle_weight) {
+    if (!(angle_weight > 0.0) || !std::isfinite(angle_weight)) {
+        throw InvalidArgumentError("polycube: angle_weight = " + std::to_string(angle_weight) +
+                                   ": must be a finite number > 0");
+    }
+    return std::make_shared<const PolycubePlugin>(prepared, angle_weight);
+}
+
+PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSolveOptions& options,
+                             const Logger& logger) {
+    if (options.optimal_bound && std::isfinite(options.bound)) {
+        throw InvalidArgumentError("polycube: bound = " + std::to_string(options.bound) +
+                                   " with the optimal bound: give one or the other");
+    }
+    if (!(options.bound > 1.0)) {
+        throw InvalidArgumentError("polycube: bound = " + std::to_string(options.bound) +
+                                   ": must be > 1 or +inf");
+    }
+    PolycubeSolve out;
+    Stopwatch stage;
+    const CubeCover cover = cube_cover_map(prepared.mesh, prepared.boundary, prepared.charts);
+    out.start = cover.positions;
+    const RestFrames<3> frames = rest_frames<3>(prepared.mesh);
+    out.start_quality =
+        map_quality<3>(linear_parts<3>(prepared.mesh, frames, out.start), frames.volume);
+    out.cube_cover_seconds = stage.lap();
+    log_line(logger, "cube-cover start: " + std::to_string(out.start_quality.inverted) +
+                         " inverted and " + std::to_string(out.start_quality.degenerate) +
+                         " degenerate of " + std::to_string(prepared.mesh.num_simplices()) +
+                         " tetrahedra");
+
+    MappingProblem problem;
+    problem.mesh = prepared.mesh;
+    problem.initial = out.start;
+    problem.source = "polycube";
+    problem.plugins.push_back(polycube_plugin(prepared, options.angle_weight));
+    SimplexAssemblyOptions& o = out.options;
+    o.distortion = DistortionType::kConformal;
+    o.bound = options.bound;
+    o.max_time_seconds = options.max_time;
+    o.num_threads = options.threads;
+    o.mode = SolveMode::kFull;
+    o.untangle_fallback = false;
+    SimplexAssemblyObserver observer;
+    observer.logger = logger;
+    if (options.optimal_bound) {
+        OptimalBoundOptions schedule{options.rounds, 1e-3};
+        // A round counts only when its map is a PolyCube (one cut short by the time limit before
+        // the vertex stage is not planar, though the driver finds no inverted tetrahedron).
+        schedule.accept = [&prepared](const SimplexAssemblyResult& r) {
+            return verify_polycube(prepared.layout(), r.positions, prepared.input_volume).passed;
+        };
+        OptimalBound rounds = optimal_bound(problem, o, schedule, observer);
+        out.solve = std::move(rounds.solve);
+        out.rounds = std::move(rounds.rounds);
+        out.bound = out.rounds.front().bound;
+        for (const BoundRound& r : out.rounds)
+            if (r.success) out.bound = r.bound;
+    } else {
+        out.solve = run_simplex_assembly(problem, o, observer);
+        out.bound = o.bound;
+    }
+    out.positions = out.solve.positions;
+    out.solve_seconds = stage.lap();
+    out.verification = verify_polycube(prepared.layout(), out.positions, prepared.input_volume);
+    out.verify_seconds = stage.lap();
+    out.success = out.solve.success && out.verification.passed;
+    std::ostringstream message;
+    message << (out.success ? "success: " : "FAILED: ") << "PolyCube "
+            << (out.verification.passed ? "verified" : "NOT verified") << " from the output ("
+            << out.verification.quality.inverted << " inverted, "
+            << out.verification.quality.degenerate << " degenerate, largest chart spread "
+            << out.verification.max_planarity << " of the diagonal, "
+            << out.verification.zero_length_edges << " zero-length PolyCube edges, "
+            << out.verification.edge_angle_violations + out.verification.vertex_angle_violations
+            << " angle sums at their limit); conformal distortion max "
+            << out.verification.quality.conformal.max << ", mean "
+            << out.verification.quality.conformal.mean;
+    if (!out.rounds.empty()) message << "; " << out.rounds.size() << " optimal-bound rounds";
+    message << ". " << out.solve.message;
+    out.message = message.str();
+    return out;
+}
+
+}  // namespace sa

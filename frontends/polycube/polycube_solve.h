@@ -1,0 +1,74 @@
+#pragma once
+// The PolyCube solve (issue 21; the paper's 5.3 with 5.1's barriers), a configuration of the mesh
+// driver (simplex_assembly.h) and its engine, with no schedule of its own:
+//
+//   1. the cube-cover start (geometry/cube_cover.h): planar, axis-aligned charts, possibly folded;
+//   2. the driver's disassembly (closest similarity, 4.2), its assembly (r-SA, Eq. 10) and its
+//      vertex stage, minimizing the conformal barrier E_C (bound K, or none) with the PolyCube
+//      plugin (polycube_plugin()) adding, in the assembly stage,
+//        - planarity a^T A_i e_k = 0 on two normalized edges of every labelled boundary facet of
+//          tetrahedron i (energies/polycube_constraints.h), in E~_assembly: with the edge
+//          assembly of Eq. 7 every chart maps into one plane orthogonal to its axis;
+//        - the 3D boundary-angle barriers E_e = 1 / (2 pi - theta_e) and E_v = 1 / (4 pi - theta_v)
+//          in A-form (energies/tet_angle_barriers.h; stars of more than kMaxAngleFan tetrahedra
+//          only in the vertex stage);
+//      and, in the vertex stage, the sliding boundary: the vertices of each plane (the charts of
+//      one axis that share vertices) are projected onto their mean coordinate and keep it
+//      exactly (the variable is fixed): a chart vertex slides in its plane, a vertex where two
+//      planes meet along their line, a corner of three stays. The planes fix the translation.
+//      The angle barriers are checked on the vertex stage's start (the hand-over) and need no
+//      term there: with exact planes and no degenerate tetrahedron the angle sums cannot change
+//      (polycube_solve.cpp says why); verification measures them on the output;
+//   3. with `optimal_bound`, the rounds of optimal_bound.h (5.1, "Optimal bound");
+//   4. verify_polycube() on the output positions: the run succeeds only when it passes (and the
+//      driver's own verification: no inverted or degenerate tetrahedron, no branched edge).
+//
+// Units: positions in the input's units; distortion reported after scaling to the input volume.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "frontends/polycube/polycube_preparation.h"
+#include "frontends/simplex_assembly/optimal_bound.h"
+#include "frontends/simplex_assembly/simplex_assembly.h"
+
+namespace sa {
+
+struct PolycubeSolveOptions {
+    double bound = kInfinity;     ///< K on the conformal distortion; +inf: none
+    bool optimal_bound = false;   ///< rounds of optimal_bound.h (bound must be +inf then)
+    int rounds = 10;              ///< most rounds with optimal_bound
+    double max_time = kInfinity;  ///< seconds, the whole solve
+    int threads = 0;              ///< 0 = all cores
+    /// Weight of the 3D boundary-angle barriers against E_C.
+    double angle_weight = 1.0;
+};
+
+struct PolycubeSolve {
+    Eigen::MatrixXd start;           ///< the cube-cover map, #V x 3
+    MapQuality start_quality;        ///< of the start
+    Eigen::MatrixXd positions;       ///< the output, #V x 3
+    SimplexAssemblyResult solve;     ///< the driver's result (the kept round)
+    std::vector<BoundRound> rounds;  ///< with optimal_bound (empty otherwise)
+    /// The bound the kept result was solved with, and its largest conformal distortion.
+    double bound = kInfinity;
+    PolycubeVerification verification;
+    bool success = false;  ///< the driver's and verify_polycube()'s checks both passed
+    std::string message;   ///< the outcome in a sentence or two
+    double cube_cover_seconds = 0.0, solve_seconds = 0.0, verify_seconds = 0.0;
+    SimplexAssemblyOptions options;  ///< what the driver was given (first round)
+};
+
+/// The plugin of `prepared`'s PolyCube terms (see above). It refers to `prepared`, which must
+/// outlive it. `angle_weight` multiplies the angle barriers. The assembly stage takes the
+/// linear-part layout only (r-SA, f-SA).
+std::shared_ptr<const AssemblyPlugin<3>> polycube_plugin(const PreparedPolycube& prepared,
+                                                         double angle_weight = 1.0);
+
+/// The solve described above. Progress rows go to `logger`. Bad options throw
+/// InvalidArgumentError; numerical outcomes are in the result.
+PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSolveOptions& options,
+                             const Logger& logger = {});
+
+}  // namespace sa

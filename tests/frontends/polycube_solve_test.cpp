@@ -1,0 +1,177 @@
+// The PolyCube solve (frontends/polycube/polycube_solve.h) and the driver's plugin hook
+// (frontends/simplex_assembly/assembly_plugin.h) it stands on, on generated voxel shapes.
+#include "frontends/polycube/polycube_solve.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <atomic>
+
+#include "../geometry/polycube_fixtures.h"
+#include "geometry/mesh_generators.h"
+#include "geometry/rest_frames.h"
+#include "optim/errors.h"
+
+namespace sa {
+namespace {
+
+/// A user's plugin: the vertices of the top face (rest z = 1) of a unit cube stay on one plane
+/// z = c. Assembly stage: e_z^T A_t e = 0 on two edges of each top facet's tetrahedron; vertex
+/// stage: the top vertices projected onto their mean z, which they keep (the variable is fixed).
+class TopOnPlane final : public AssemblyPlugin<3> {
+  public:
+    explicit TopOnPlane(const SimplicialMesh& mesh) : AssemblyPlugin<3>("top on a plane") {
+        for (Index v = 0; v < mesh.num_vertices(); ++v)
+            if (mesh.vertices(v, 2) > 1.0 - 1e-12) top_.push_back(v);
+        for (Index t = 0; t < mesh.num_simplices(); ++t) {
+            std::vector<int> corners;
+            for (int k = 0; k < 4; ++k)
+                if (mesh.vertices(mesh.simplices(t, k), 2) > 1.0 - 1e-12) corners.push_back(k);
+            if (corners.size() == 3) facets_.push_back({t, corners[0], corners[1], corners[2]});
+        }
+    }
+    void add_assembly_terms(SimplexAssemblyEngine<3>& engine,
+                            const PluginStage<3>& stage) const override {
+        ++assembly_calls;
+        std::vector<LinearPartConstraint<3, 1>> rows;
+        for (const auto& f : facets_) {
+            for (int k = 2; k <= 3; ++k) {
+                const Vec<3> e =
+                    stage.frames->corner(f[0], f[k]) - stage.frames->corner(f[0], f[1]);
+                LinearPartConstraint<3, 1> row;
+                row.simplex = f[0];
+                row.rows.coefficients.setZero();
+                // z^T A e = sum_j A_2j e_j; vec(A) column-major: A_2j at 2 + 3 j.
+                for (int j = 0; j < 3; ++j) row.rows.coefficients(0, 2 + 3 * j) = e[j] / e.norm();
+                row.rows.rhs[0] = 0.0;
+                rows.push_back(row);
+            }
+        }
+        engine.add_linear_part_constraints<1>("top planarity", rows);
+    }
+    bool project(Eigen::MatrixXd& positions, const PluginStage<3>&) const override {
+        double z = 0.0;
+        for (Index v : top_) z += positions(v, 2);
+        z /= double(top_.size());
+        for (Index v : top_) positions(v, 2) = z;
+        return true;
+    }
+    void add_vertex_terms(SimplexAssemblyEngine<3>& engine, const PluginStage<3>&) const override {
+        ++vertex_calls;
+        for (Index v : top_) engine.problem().set_fixed(engine.vertex_variables(v)[2]);
+    }
+    const std::vector<Index>& top() const { return top_; }
+    mutable std::atomic<int> assembly_calls{0}, vertex_calls{0};
+
+  private:
+    std::vector<Index> top_;
+    std::vector<std::array<Index, 4>> facets_;  ///< tet, then its three top corners
+};
+
+Eigen::Matrix3d rotation(double angle, const Eigen::Vector3d& axis) {
+    return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+}
+
+TEST(PolycubeSolve, TheDriverCallsAPluginInEveryStageAndItsConstraintHoldsExactly) {
+    MappingProblem p;
+    p.mesh = grid_tetrahedra(3, 3, 3);
+    // A rotated and squeezed start: the top is neither flat nor horizontal.
+    const Eigen::Matrix3d R = rotation(0.4, {1.0, 2.0, 0.5});
+    p.initial = p.mesh.vertices * R.transpose();
+    for (Index v = 0; v < p.mesh.num_vertices(); ++v)
+        p.initial(v, 0) += 0.1 * std::sin(3.0 * p.mesh.vertices(v, 2));
+    auto plugin = std::make_shared<TopOnPlane>(p.mesh);
+    ASSERT_EQ(plugin->top().size(), 16u);
+    p.plugins.push_back(plugin);
+    const SimplexAssemblyResult r = run_simplex_assembly(p, SimplexAssemblyOptions{});
+    ASSERT_TRUE(r.success) << r.message;
+    EXPECT_TRUE(r.vertex_stage_ran) << r.vertex_stage_note;
+    EXPECT_EQ(plugin->assembly_calls.load(), 1);
+    EXPECT_GE(plugin->vertex_calls.load(), 1);
+    double lo = kInfinity, hi = -kInfinity;
+    for (Index v : plugin->top()) {
+        lo = std::min(lo, r.positions(v, 2));
+        hi = std::max(hi, r.positions(v, 2));
+    }
+    EXPECT_LE(hi - lo, 1e-12);
+
+    // The submesh mode cannot restrict a plugin's terms: refused, naming the plugin.
+    SimplexAssemblyOptions submesh;
+    submesh.mode = SolveMode::kSubmesh;
+    try {
+        run_simplex_assembly(p, submesh);
+        FAIL() << "the submesh mode accepted a plugin";
+    } catch (const InvalidArgumentError& e) {
+        EXPECT_NE(std::string(e.what()).find("top on a plane"), std::string::npos) << e.what();
+    }
+    // A plugin of the wrong dimension is rejected.
+    MappingProblem flat;
+    flat.mesh = grid_triangles(2, 2);
+    flat.initial = flat.mesh.vertices;
+    flat.plugins.push_back(plugin);
+    EXPECT_THROW(run_simplex_assembly(flat, SimplexAssemblyOptions{}), InvalidArgumentError);
+}
+
+PreparedPolycube prepared_shape(const SimplicialMesh& mesh) {
+    return prepare_polycube(mesh, "generated", PolycubeLabelInput{});
+}
+
+// Planarity holds exactly (1e-9 of the diagonal, measured by verify_polycube) from a start that
+// is rotated away from the axes and folded: no chart is planar or axis-aligned in it.
+TEST(PolycubeSolve, ChartsArePlanarFromARotatedFoldedStart) {
+    const PreparedPolycube prepared =
+        prepared_shape(testing::bent(testing::voxel_tetrahedra(testing::l_shape(), 2), 0.08));
+    MappingProblem p;
+    p.mesh = prepared.mesh;
+    const Eigen::Matrix3d R = rotation(0.5, {0.3, -1.0, 0.7});
+    p.initial = prepared.mesh.vertices * R.transpose();
+    // Fold: push one vertex of the interior through its neighbours.
+    Index inner = -1;
+    for (Index v = 0; v < prepared.mesh.num_vertices() && inner < 0; ++v)
+        if (!prepared.boundary.on_boundary[v]) inner = v;
+    ASSERT_GE(inner, 0);
+    p.initial.row(inner) += Eigen::RowVector3d(0.9, 0.0, 0.0);
+    const RestFrames<3> frames = rest_frames<3>(prepared.mesh);
+    const MapQuality start =
+        map_quality<3>(linear_parts<3>(prepared.mesh, frames, p.initial), frames.volume);
+    ASSERT_GT(start.inverted, 0);
+    const PolycubeVerification before =
+        verify_polycube(prepared.layout(), p.initial, prepared.input_volume);
+    ASSERT_FALSE(before.passed);
+    ASSERT_GT(before.nonplanar_charts, 0);
+    p.plugins.push_back(polycube_plugin(prepared));
+    SimplexAssemblyOptions options;
+    options.untangle_fallback = false;
+    const SimplexAssemblyResult r = run_simplex_assembly(p, options);
+    ASSERT_TRUE(r.success) << r.message;
+    const PolycubeVerification v =
+        verify_polycube(prepared.layout(), r.positions, prepared.input_volume);
+    EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
+    EXPECT_EQ(v.nonplanar_charts, 0);
+    EXPECT_LE(v.max_planarity, 1e-9);
+    EXPECT_EQ(v.wrong_side_charts, 0);
+}
+
+TEST(PolycubeSolve, SolveFromTheCubeCoverIsVerifiedWithAndWithoutTheOptimalBound) {
+    const PreparedPolycube prepared =
+        prepared_shape(testing::bent(testing::voxel_tetrahedra(testing::l_shape(), 2), 0.15));
+    const PolycubeSolve plain = solve_polycube(prepared, {});
+    ASSERT_TRUE(plain.success) << plain.message;
+    EXPECT_TRUE(plain.verification.passed);
+    EXPECT_EQ(plain.verification.quality.inverted, 0);
+    PolycubeSolveOptions rounds;
+    rounds.optimal_bound = true;
+    rounds.rounds = 3;
+    const PolycubeSolve bounded = solve_polycube(prepared, rounds);
+    ASSERT_TRUE(bounded.success) << bounded.message;
+    ASSERT_FALSE(bounded.rounds.empty());
+    EXPECT_LE(bounded.verification.quality.conformal.max,
+              plain.verification.quality.conformal.max * (1.0 + 1e-9));
+    PolycubeSolveOptions both;
+    both.bound = 3.0;
+    both.optimal_bound = true;
+    EXPECT_THROW(solve_polycube(prepared, both), InvalidArgumentError);
+}
+
+}  // namespace
+}  // namespace sa
