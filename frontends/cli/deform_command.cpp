@@ -1,6 +1,15 @@
 #include "frontends/cli/deform_command.h"
 
+#include <cstdio>
+#include <iostream>
+
 #include "frontends/cli/cli_support.h"
+#include "frontends/cli/out_of_memory.h"
+#include "frontends/cli/runtime_settings.h"
+#include "frontends/deform/deform_solve.h"
+#include "frontends/output/map_output.h"
+#include "frontends/output/map_report.h"
+#include "frontends/output/pose_picture.h"
 #include "geometry/io/mesh_file.h"
 #include "optim/errors.h"
 
@@ -18,6 +27,73 @@ double parse_bound_option(const std::string& name, const std::string& text) {
     } catch (const std::exception&) {
     }
     throw InvalidArgumentError(name + " " + text + ": expected a number > 1 or 'inf'");
+}
+
+/// JSON has no infinity: null.
+nlohmann::json number(double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+std::string format_bound(double K) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", K);
+    return std::isfinite(K) ? text : "inf";
+}
+
+/// The distortion of a quality summary in one line.
+std::string format_quality(const MapQuality& q) {
+    char line[300];
+    std::snprintf(line, sizeof line,
+                  "%ld inverted, %ld degenerate; conformal max %.4g mean %.4g; volumetric max "
+                  "%.4g mean %.4g; isometric max %.4g mean %.4g",
+                  long(q.inverted), long(q.degenerate), q.conformal.max, q.conformal.mean,
+                  q.volumetric.max, q.volumetric.mean, q.isometric.max, q.isometric.mean);
+    return line;
+}
+
+/// The round's bound on d^c and on d^vol, and the largest of each reached.
+struct RoundBounds {
+    double conformal_bound, volumetric_bound, conformal, volumetric;
+};
+RoundBounds round_bounds(const BoundRound& r) {
+    RoundBounds b{r.bound, kInfinity, r.max_distortion, 0.0};
+    for (const BoundCheck& c : r.bounds) {
+        if (c.name != "volumetric") continue;
+        b.volumetric_bound = c.bound;
+        b.volumetric = c.max_distortion;
+    }
+    return b;
+}
+
+nlohmann::json deform_report(const DeformArguments& a, const DeformResult& r) {
+    nlohmann::json rounds = nlohmann::json::array();
+    for (const BoundRound& round : r.solve.rounds) {
+        const RoundBounds b = round_bounds(round);
+        rounds.push_back({{"conformal_bound", number(b.conformal_bound)},
+                          {"volumetric_bound", number(b.volumetric_bound)},
+                          {"conformal_max", number(b.conformal)},
+                          {"volumetric_max", number(b.volumetric)},
+                          {"success", round.success},
+                          {"iterations", round.iterations},
+                          {"seconds", round.time}});
+    }
+    const DeformStart& s = r.start;
+    nlohmann::json report;
+    report["command"] = "deform";
+    report["files"] = {{"rest", a.rest}, {"handles", a.handles}, {"targets", a.targets}};
+    report["start"] = {{"method", "ARAP, handles at their targets"},
+                       {"from", s.arap.start},
+                       {"iterations", s.arap.iterations},
+                       {"stop", s.arap.stop},
+                       {"energy", s.arap.energy},
+                       {"handle_error", s.handle_error},
+                       {"seconds", s.seconds},
+                       {"quality", quality_json(s.quality)}};
+    report["rounds"] = rounds;
+    report["solve"] = map_report(r.problem, r.solver, r.solve.solve);
+    report["success"] = r.success();
+    report["seconds"] = r.seconds;
+    return report;
 }
 
 }  // namespace
@@ -117,16 +193,22 @@ DeformOptions deform_options(const DeformArguments& a) {
     return options;
 }
 
-DeformInput read_deform_input(const DeformArguments& a) {
-    // Outputs first: a name that cannot be written should not cost reading a large mesh.
-    for (const std::string* path : {&a.out, &a.png, &a.report}) {
-        if (!path->empty()) check_writable(*path, a.force);
-    }
+void plan_deform_files(const DeformArguments& a, OutputPlan& plan) {
+    plan.input("--rest", a.rest);
+    plan.input("--handles", a.handles);
+    plan.input("--targets", a.targets);
+    plan.file("--out", a.out);
+    plan.file("--png", a.png);
+    plan.file("--report", a.report);
+    plan.check();
     if (!a.png.empty() && extension(a.png) != ".png")
         throw InvalidArgumentError("--png " + a.png + ": expected a .png file name");
     if (!a.report.empty() && extension(a.report) != ".json")
         throw InvalidArgumentError("--report " + a.report + ": expected a .json file name");
+}
 
+DeformInput read_deform_input(const DeformArguments& a) {
+    set_activity("reading --rest " + a.rest);
     MeshFile rest = read_mesh_file(a.rest);
     DeformInput input;
     input.warnings = std::move(rest.warnings);
@@ -139,8 +221,74 @@ DeformInput read_deform_input(const DeformArguments& a) {
                          "the plane");
     }
     check_output_format(a.out, d);
+    set_activity("reading the handles and --targets " + a.targets);
     input.handle_targets = read_handle_targets(a.handles, a.targets, input.mesh.num_vertices(), d);
     return input;
+}
+
+}  // namespace sa::cli
+
+namespace sa::cli {
+
+int run_deform_command(const DeformArguments& a) {
+    // Options and output locations first: a typo should not cost a solve.
+    const DeformOptions options = deform_options(a);
+    OutputPlan plan(a.force);
+    plan_deform_files(a, plan);
+    reserve_blas_buffer();
+    const DeformInput input = read_deform_input(a);
+    for (const std::string& warning : input.warnings)
+        std::cerr << "sa: warning: " << one_line(warning) << '\n';
+    const int d = input.mesh.simplex_dimension();
+    std::cout << "sa deform: " << input.mesh.num_simplices()
+              << (d == 2 ? " triangles" : " tetrahedra") << ", " << input.mesh.num_vertices()
+              << " vertices, " << input.handle_targets.handles.size() << " handles (" << a.rest
+              << ")\n";
+
+    SimplexAssemblyObserver observer;
+    observer.logger = stderr_logger(a.quiet);
+    set_activity("posing (ARAP start and Simplex Assembly on " +
+                 std::to_string(input.mesh.num_simplices()) +
+                 (d == 2 ? " triangles)" : " tetrahedra)"));
+    const DeformResult result = deform(input.mesh, input.handle_targets, options, observer);
+    const SimplexAssemblyResult& solved = result.solve.solve;
+
+    set_activity("writing the outputs");
+    plan.write(a.out,
+               [&](const std::string& path) { write_map_result(path, result.problem, solved); });
+    if (!a.png.empty()) {
+        PosePicture picture;
+        for (Index s = 0; s < result.start.quality.simplices; ++s)
+            if (result.start.quality.per_simplex[s].inverted) picture.marked.push_back(s);
+        picture.marked_label = "inverted by the ARAP start";
+        plan.write(a.png, [&](const std::string& path) {
+            write_pose_png(path, input.mesh, solved.positions, picture);
+        });
+    }
+    if (!a.report.empty()) {
+        const nlohmann::json report = deform_report(a, result);
+        plan.write(a.report, [&](const std::string& path) { write_json(path, report); });
+    }
+    plan.commit();
+
+    std::cout << "  ARAP start:  " << format_quality(result.start.quality) << " ("
+              << result.start.arap.iterations << " iterations, " << result.start.arap.stop << ", "
+              << format_bound(result.start.seconds) << " s)\n";
+    for (std::size_t k = 0; k < result.solve.rounds.size(); ++k) {
+        const BoundRound& round = result.solve.rounds[k];
+        const RoundBounds b = round_bounds(round);
+        std::cout << "  round " << k << ": bounds conformal " << format_bound(b.conformal_bound)
+                  << ", volumetric " << format_bound(b.volumetric_bound) << " -> reached "
+                  << format_bound(b.conformal) << ", " << format_bound(b.volumetric) << "; "
+                  << round.iterations << " iterations, " << format_bound(round.time) << " s"
+                  << (round.success ? "" : " (not verified within its bounds)") << "\n";
+    }
+    std::cout << "  result:      " << format_quality(solved.final_quality) << "\n"
+              << "  " << solved.message << "\n"
+              << "  total " << format_bound(result.seconds) << " s; wrote " << a.out
+              << (a.png.empty() ? "" : ", " + a.png) << (a.report.empty() ? "" : ", " + a.report)
+              << "\n";
+    return result.success() ? kExitVerified : kExitNotVerified;
 }
 
 }  // namespace sa::cli

@@ -1,8 +1,8 @@
 #pragma once
-// `sa deform` (issue 22), prepared: its arguments and the checks of its options and input
-// files. The command is not registered in sa_main.cpp yet: its solve (Simplex Assembly with
-// E_m = mu |A - A0|^2 to the ARAP start and two barriers, conformal and volumetric, with the
-// optimal-bound loop lowering both) waits for the engine of issue 20.
+// `sa deform` (issue 22): a pose from the rest shape and the handles' targets alone, by an ARAP
+// start and Simplex Assembly bounding the conformal and the volumetric distortion together
+// (frontends/deform/deform_solve.h). Its arguments, the checks of its options, files and output
+// locations (all before any solve), and the run.
 //
 //   sa deform --rest FILE [--handles FILE] --targets FILE
 //             [--optimal-bound | --bound-conformal K1 --bound-volumetric K2] --out FILE
@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "frontends/cli/output_plan.h"
 #include "frontends/deform/deform_options.h"
 #include "frontends/deform/handle_targets.h"
 #include "geometry/simplicial_mesh.h"
@@ -45,11 +46,19 @@ struct DeformInput {
     std::vector<std::string> warnings;  ///< notes of the mesh reader
 };
 
+/// Declares the inputs and outputs on `plan` and checks them (OutputPlan::check(): two outputs
+/// with one path, an output naming an input, an unwritable location, an existing file without
+/// --force), and the extensions of --png and --report. Before anything is read.
+void plan_deform_files(const DeformArguments& arguments, OutputPlan& plan);
+
 /// Reads and checks the rest mesh (planar triangles or tetrahedra, validated), the handles and
-/// their targets (frontends/deform/handle_targets.h), and refuses outputs that exist unless
-/// --force, or whose format cannot hold the mesh; all before any solve, so that bad input costs
-/// nothing and writes nothing. Throws InputError or InvalidArgumentError, one line naming the
-/// file, line, element or option.
+/// their targets (frontends/deform/handle_targets.h), and refuses an --out format that cannot
+/// hold the mesh; before any solve, so that bad input costs nothing and writes nothing. Throws
+/// InputError or InvalidArgumentError, one line naming the file, line, element or option.
 DeformInput read_deform_input(const DeformArguments& arguments);
+
+/// The command: exit 0 when the pose is verified (and within the bounds), 1 when it is written
+/// but not verified; bad input throws before anything is written.
+int run_deform_command(const DeformArguments& arguments);
 
 }  // namespace sa::cli

@@ -62,7 +62,21 @@ void write_pose_png(const std::string& path, const SimplicialMesh& rest,
             rest_orientation.push_back(frames.edge_inverse[s].determinant());
     }
 
-    // The faces to draw: every triangle (2D); the boundary facets and every facet of the inverted
+    // Red: the inverted simplices and the marked ones.
+    std::vector<unsigned char> red(rest.num_simplices(), 0);
+    for (Index s = 0; s < rest.num_simplices(); ++s) red[s] = quality.per_simplex[s].inverted;
+    Index marked = 0;
+    for (Index s : picture.marked) {
+        if (s < 0 || s >= rest.num_simplices()) {
+            throw InvalidArgumentError("write_pose_png: marked simplex " + std::to_string(s) +
+                                       " outside [0, " + std::to_string(rest.num_simplices()) +
+                                       ")");
+        }
+        marked += !red[s];
+        red[s] = 1;
+    }
+
+    // The faces to draw: every triangle (2D); the boundary facets and every facet of the red
     // tetrahedra (3D: a folded one is often behind the surface, even one with a boundary facet).
     Faces faces;
     if (d == 2) {
@@ -76,7 +90,7 @@ void write_pose_png(const std::string& path, const SimplicialMesh& rest,
         for (const BoundaryFacet& f : topology.boundary_facets)
             add_facet(faces, rest, f.simplex, f.opposite, rest_orientation[f.simplex] < 0.0);
         for (Index s = 0; s < rest.num_simplices(); ++s) {
-            if (!quality.per_simplex[s].inverted) continue;
+            if (!red[s]) continue;
             for (int k = 0; k < 4; ++k) add_facet(faces, rest, s, k, false);
         }
     }
@@ -90,7 +104,7 @@ void write_pose_png(const std::string& path, const SimplicialMesh& rest,
         triangles.row(f) = faces.triangles[f].transpose();
         const SimplexQuality& q = quality.per_simplex[faces.simplex[f]];
         values[f] = q.isometric;
-        flagged[f] = q.inverted;
+        flagged[f] = red[faces.simplex[f]];
         if (std::isfinite(q.isometric)) finite.push_back(q.isometric);
     }
     // The default range ends at the 99th percentile of the faces' values: a few extreme
@@ -112,18 +126,21 @@ void write_pose_png(const std::string& path, const SimplicialMesh& rest,
     view.elevation = d == 2 ? 0.0 : picture.elevation;
     view.low = picture.low;
     view.high = picture.high > picture.low ? picture.high : high;
-    const bool see_through = d == 3 && quality.inverted > 0;
+    const bool see_through = d == 3 && (quality.inverted > 0 || marked > 0);
     view.opacity = see_through ? picture.see_through_opacity : 1.0;
     view.title = picture.title;
     if (view.title.empty()) {
         char text[256];
         std::snprintf(text, sizeof text, "%ld inverted%s of %ld %s; isometric max %.3g mean %.3g",
                       long(quality.inverted),
-                      see_through ? " (red, seen through the surface)"
-                                  : (quality.inverted > 0 ? " (red)" : ""),
+                      quality.inverted == 0 ? ""
+                      : see_through         ? " (red, seen through the surface)"
+                                            : " (red)",
                       long(quality.simplices), d == 2 ? "triangles" : "tetrahedra",
                       quality.isometric.max, quality.isometric.mean);
         view.title = text;
+        if (marked > 0)
+            view.title += "; " + std::to_string(marked) + " " + picture.marked_label + " in red";
     }
     write_surface_value_png(path, points, triangles, values, view, flagged);
 }

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <vector>
 
 #include "geometry/simplicial_mesh.h"
 
@@ -28,8 +29,13 @@ struct PosePicture {
     /// least low + 0.5).
     double low = 1.0;
     double high = 0.0;
-    /// Opacity of the surface of a tet mesh with inverted tetrahedra.
+    /// Opacity of the surface of a tet mesh with inverted (or marked) tetrahedra.
     double see_through_opacity = 0.3;
+    /// Simplices drawn like the inverted ones although they are not (every facet of a
+    /// tetrahedron, in red), e.g. those the start of a pose inverted; the default title then
+    /// names them with `marked_label`.
+    std::vector<Index> marked;
+    std::string marked_label = "marked";
 };
 
 /// Writes `path`. `rest` is the rest mesh (planar triangles or tetrahedra), `positions` #V x d

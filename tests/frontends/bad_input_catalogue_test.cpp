@@ -902,6 +902,64 @@ std::vector<Case> catalogue() {
                      0,
                      {"conformal max 1 ", "success: verified"},
                      {"o.obj"}});
+    // `sa deform`: a 2 x 2 x 2 box of tetrahedra, its x = 0 face fixed and its x = 1 face
+    // lifted, as rows `index x y z`.
+    const auto lifted_box = [](const Inputs& in) {
+        const SimplicialMesh box = grid_tetrahedra(2, 2, 2);
+        in.mesh("box.mesh", box);
+        std::ostringstream rows;
+        for (Index v = 0; v < box.num_vertices(); ++v) {
+            const double x = box.vertices(v, 0);
+            if (x > 0.0 && x < 1.0) continue;
+            rows << v << ' ' << x << ' ' << box.vertices(v, 1) + (x > 0.5 ? 0.2 : 0.0) << ' '
+                 << box.vertices(v, 2) << '\n';
+        }
+        in.text("t.txt", rows.str());
+    };
+    cases.push_back({"DeformPosesABox",
+                     lifted_box,
+                     "deform --rest {D}/box.mesh --targets {D}/t.txt --out {D}/o.vtu --report "
+                     "{D}/r.json --quiet",
+                     0,
+                     {"ARAP start:", "success: verified"},
+                     {"o.vtu", "r.json"}});
+    cases.push_back({"DeformHandleOutOfRange",
+                     [&](const Inputs& in) {
+                         lifted_box(in);
+                         in.text("h.txt", "0\n1\n99\n");
+                     },
+                     "deform --rest {D}/box.mesh --handles {D}/h.txt --targets {D}/t.txt --out "
+                     "{D}/o.vtu",
+                     2,
+                     {"{D}/h.txt:3:", "handle vertex 99 outside [0, 27)"}});
+    cases.push_back({"DeformHandleTwiceWithTwoTargets",
+                     [&](const Inputs& in) {
+                         lifted_box(in);
+                         in.text("t.txt", "0 0 0 0\n0 0.5 0 0\n");
+                     },
+                     "deform --rest {D}/box.mesh --targets {D}/t.txt --out {D}/o.vtu",
+                     2,
+                     {"{D}/t.txt:2:"}});
+    cases.push_back({"DeformOptimalBoundWithABound",
+                     lifted_box,
+                     "deform --rest {D}/box.mesh --targets {D}/t.txt --out {D}/o.vtu "
+                     "--optimal-bound --bound-volumetric 2",
+                     2,
+                     {"--optimal-bound finds both bounds"}});
+    cases.push_back({"DeformSurfaceInSpace",
+                     [&](const Inputs& in) {
+                         lifted_box(in);
+                         bump_off(in);
+                     },
+                     "deform --rest {D}/bump.off --targets {D}/t.txt --out {D}/o.vtu",
+                     2,
+                     {"{D}/bump.off", "triangles in space"}});
+    cases.push_back({"DeformOutAndReportTheSame",
+                     lifted_box,
+                     "deform --rest {D}/box.mesh --targets {D}/t.txt --out {D}/o.vtu --report "
+                     "{D}/o.vtu",
+                     2,
+                     {"name the same file"}});
     return cases;
 }
 

@@ -1,4 +1,5 @@
-// `sa deform`'s arguments and input checks, in process (the command is not registered yet).
+// `sa deform`'s arguments and input checks, in process (the run itself: sa_command_test.cpp and
+// bad_input_catalogue_test.cpp).
 #include "frontends/cli/deform_command.h"
 
 #include <gtest/gtest.h>
@@ -143,16 +144,27 @@ TEST(DeformCommand, BadInputIsOneLineBeforeAnySolve) {
     EXPECT_TRUE(throws_input_error([&] { read_deform_input(a); },
                                    {"far.txt:3:", "handle vertex 999 outside [0, 20)"}));
     a.handles.clear();
-    // An existing output without --force; an output that cannot hold tetrahedra.
+    // An existing output without --force (the output plan); an output that cannot hold
+    // tetrahedra.
     const std::string existing = folder.write("exists.vtu", "old");
     a.out = existing;
-    EXPECT_TRUE(throws_input_error([&] { read_deform_input(a); }, {"exists.vtu exists"}));
+    EXPECT_TRUE(throws_input_error(
+        [&] {
+            OutputPlan plan(a.force);
+            plan_deform_files(a, plan);
+        },
+        {"exists.vtu exists"}));
     EXPECT_EQ(test::read_all(existing), "old");
     a.out = folder.path("posed.obj");
     EXPECT_TRUE(throws_invalid_argument([&] { read_deform_input(a); }, "holds triangles"));
     a.out = folder.path("posed.vtu");
     a.png = folder.path("pose.jpg");
-    EXPECT_TRUE(throws_invalid_argument([&] { read_deform_input(a); }, "--png"));
+    EXPECT_TRUE(throws_invalid_argument(
+        [&] {
+            OutputPlan plan(a.force);
+            plan_deform_files(a, plan);
+        },
+        "--png"));
     a.png.clear();
     // A surface in space has no deformation of this kind.
     const SimplicialMesh torus = torus_triangles(8, 6);

@@ -89,6 +89,28 @@ TEST_F(PosePictureTest, FoldedBoundaryTetrahedraAndTriangles) {
     EXPECT_EQ(red_pixels(path("grid-rest.png")), 0);
 }
 
+TEST_F(PosePictureTest, MarkedTetrahedraShowInRedOnAValidPose) {
+    SKIP_WITHOUT_X();
+    // The rest pose, no tetrahedron inverted, the ones around the centre marked (as sa deform
+    // marks those its start inverted).
+    const SimplicialMesh cube = grid_tetrahedra(6, 6, 6);
+    PosePicture picture = small_picture();
+    for (Index s = 0; s < cube.num_simplices(); ++s) {
+        const Eigen::RowVector3d centre =
+            (cube.vertices.row(cube.simplices(s, 0)) + cube.vertices.row(cube.simplices(s, 1)) +
+             cube.vertices.row(cube.simplices(s, 2)) + cube.vertices.row(cube.simplices(s, 3))) /
+            4.0;
+        if ((centre - Eigen::RowVector3d(0.5, 0.5, 0.5)).norm() < 0.2) picture.marked.push_back(s);
+    }
+    ASSERT_FALSE(picture.marked.empty());
+    write_pose_png(path("marked.png"), cube, cube.vertices, picture);
+    EXPECT_GT(red_pixels(path("marked.png")), 30);
+    picture.marked = {cube.num_simplices()};
+    EXPECT_THROW(write_pose_png(path("bad.png"), cube, cube.vertices, picture),
+                 InvalidArgumentError);
+    EXPECT_FALSE(fs::exists(path("bad.png")));
+}
+
 TEST_F(PosePictureTest, RejectsWrongShapes) {
     const SimplicialMesh cube = grid_tetrahedra(2, 2, 2);
     EXPECT_THROW(write_pose_png(path("a.png"), cube, cube.vertices.leftCols(2)),

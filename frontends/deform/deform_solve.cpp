@@ -1,0 +1,75 @@
+#include "frontends/deform/deform_solve.h"
+
+#include "energies/difference_energy.h"
+#include "energies/distortion_barrier.h"
+#include "geometry/map_quality.h"
+#include "geometry/rest_frames.h"
+#include "optim/stopwatch.h"
+
+namespace sa {
+
+namespace {
+
+template <int D>
+void add_terms(MappingProblem& problem, const DeformOptions& options) {
+    const RestFrames<D> frames = rest_frames<D>(problem.mesh);
+    std::vector<Mat<D>> references = linear_parts<D>(problem.mesh, frames, problem.reference);
+    problem.energies.push_back(simplex_term<D>(
+        "E_m", DifferenceEnergy<D>(std::move(references), std::vector<double>{options.mu})));
+    problem.energies.push_back(
+        simplex_term<D>("volumetric", DistortionBarrier<D, BuiltinDistortion<D>>(
+                                          BuiltinDistortion<D>(DistortionType::kVolumetric),
+                                          BarrierOptions{options.volumetric_bound, 1.0})));
+}
+
+}  // namespace
+
+MappingProblem deform_problem(const SimplicialMesh& mesh, const HandleTargets& handle_targets,
+                              const Eigen::MatrixXd& start, const DeformOptions& options) {
+    MappingProblem problem;
+    problem.mesh = mesh;
+    problem.initial = start;
+    problem.reference = start;
+    problem.handles = handle_targets.handles;
+    problem.targets = handle_targets.targets;
+    problem.source = "deform";
+    if (mesh.simplex_dimension() == 2) {
+        add_terms<2>(problem, options);
+    } else {
+        add_terms<3>(problem, options);
+    }
+    return problem;
+}
+
+SimplexAssemblyOptions deform_solver_options(const DeformOptions& options) {
+    SimplexAssemblyOptions solver;
+    solver.distortion = DistortionType::kConformal;
+    solver.bound = options.conformal_bound;
+    solver.mapping_distortion.reset();  // E_m is the problem's own unit-weight difference
+    solver.initialization = options.initialization;
+    solver.max_time_seconds = options.max_time_seconds;
+    solver.num_threads = options.num_threads;
+    // The submesh mode repairs the simplices over a bound, and a round of the optimal bound
+    // starts with none over (its bounds are the previous round's largest distortions): its
+    // rounds run in the full mode, as sa param's.
+    if (options.optimal_bound) solver.mode = SolveMode::kFull;
+    return solver;
+}
+
+DeformResult deform(const SimplicialMesh& mesh, const HandleTargets& handle_targets,
+                    const DeformOptions& options, const SimplexAssemblyObserver& observer) {
+    options.validate();
+    const Stopwatch watch;
+    DeformResult result;
+    result.start = deform_start(mesh, handle_targets, options.start, observer.logger);
+    result.problem = deform_problem(mesh, handle_targets, result.start.positions, options);
+    result.solver = deform_solver_options(options);
+    result.solver.max_time_seconds = std::max(options.max_time_seconds - watch.seconds(), 1e-3);
+    OptimalBoundOptions rounds;
+    rounds.rounds = options.optimal_bound ? options.optimal_bound_rounds : 1;
+    result.solve = optimal_bound(result.problem, result.solver, rounds, observer);
+    result.seconds = watch.seconds();
+    return result;
+}
+
+}  // namespace sa
