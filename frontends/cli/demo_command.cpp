@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/option_checks.h"
@@ -29,6 +30,9 @@ CLI::App* add_demo_command(CLI::App& app, DemoArguments& a) {
     demo->add_option("--threads", a.threads, "worker threads, 0 = all cores")
         ->check(integer_at_least(0))
         ->capture_default_str();
+    demo->add_option("--initialization", a.initialization,
+                     "the disassembly's projection (as in sa map): similarity (default), "
+                     "rotation, identity, random or bounded:K (the paper's Figure 6)");
     demo->add_flag("--force", a.force, "overwrite existing files in the folder");
     demo->add_flag("--quiet", a.quiet, "no progress rows on stderr");
     return demo;
@@ -69,6 +73,9 @@ Eigen::RowVector2d along(const Eigen::MatrixXd& polygon, double t) {
 }  // namespace
 
 int run_demo_command(const DemoArguments& a) {
+    std::optional<Initialization> initialization;
+    if (!a.initialization.empty())
+        initialization = parse_option("--initialization", a.initialization, parse_initialization);
     const int n = a.size;
     const std::string initial_path = (std::filesystem::path(a.out_dir) / "initial.vtu").string();
     const std::string unbounded_path =
@@ -112,6 +119,7 @@ int run_demo_command(const DemoArguments& a) {
               << initial.inverted << " foldovers\n";
     SimplexAssemblyOptions options;
     options.num_threads = a.threads;
+    options.initialization = initialization;
     SimplexAssemblyObserver observer;
     observer.logger = stderr_logger(a.quiet);
     std::printf(

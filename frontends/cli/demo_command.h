@@ -13,6 +13,7 @@ struct DemoArguments {
     std::string out_dir = "sa-demo";
     int size = 24;
     int threads = 0;
+    std::string initialization;  ///< the disassembly's projection; empty: the default
     bool force = false, quiet = false;
 };
 
