@@ -278,6 +278,9 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
             count_boundary_violations(prepared->assembly.fans, result.positions);
         if (result.boundary_violations_after > 0) result.success = false;
     }
+    // A valid map over a bound the caller asked for is not what was asked (the last resort above
+    // untangles without the bounds): written, and reported as a failure.
+    if (!result.verification.within_bound()) result.success = false;
     std::ostringstream message;
     message << (result.success ? "success: " : "FAILED: ") << result.verification.describe()
             << ". ";

@@ -12,7 +12,8 @@
 //      and Newton finishes on the vertex positions (vertex_stage.h);
 //   5. verify the recovered positions: inverted and degenerate simplices (against each rest
 //      orientation), handle error, distortion and the bound. Success means no inverted or
-//      degenerate simplex and every handle within tolerance, measured on the output.
+//      degenerate simplex, no branch point, every handle within tolerance and every bound held,
+//      measured on the output.
 //
 // Triangles map to the plane (from a planar rest shape or from a surface in space), tetrahedra to
 // space. Bad input throws InputError or InvalidArgumentError; numerical outcomes are reported in
@@ -158,7 +159,7 @@ struct SubmeshStats {
 
 struct SimplexAssemblyResult {
     Eigen::MatrixXd positions;  ///< #V x d output map
-    bool success = false;       ///< verification passed
+    bool success = false;       ///< verification passed and every bound held
     std::string message;        ///< the outcome in a sentence or two
     bool assembled = false;     ///< E~_assembly reached the tolerance
     double final_assembly = 0.0;
