@@ -21,6 +21,12 @@ void DeformOptions::validate() const {
     }
     if (optimal_bound_rounds < 1)
         fail("optimal_bound_rounds = " + std::to_string(optimal_bound_rounds) + " < 1");
+    if (!(optimal_bound_tolerance >= 0.0 && optimal_bound_tolerance < 1.0)) {
+        fail("optimal_bound_tolerance = " + std::to_string(optimal_bound_tolerance) +
+             " must be in [0, 1)");
+    }
+    if (!(optimal_bound_band > 0.0 && optimal_bound_band <= 1.0))
+        fail("optimal_bound_band = " + std::to_string(optimal_bound_band) + " must be in (0, 1]");
     if (!(mu >= 0.0 && std::isfinite(mu))) fail("mu = " + std::to_string(mu) + " must be >= 0");
     if (!(max_time_seconds > 0.0))
         fail("max_time_seconds = " + std::to_string(max_time_seconds) + " must be > 0");

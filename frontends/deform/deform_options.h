@@ -8,7 +8,8 @@
 //         d^c = trace(A^T A) / (2 det A) in 2D, (|A|^2 |A^-1|^2 - 1) / 8 in 3D;
 //         d^vol = (det A + 1 / det A) / 2; each is 1 at a rotation),
 // and, with optimal_bound, the optimal-bound loop of 5.1 lowering both: each round takes the
-// largest d^c and the largest d^vol reached as its next two bounds.
+// largest d^c and the largest d^vol reached as its next two bounds (just above them), the rounds
+// after the first in the submesh mode around the simplices near a bound (optimal_bound.h).
 
 #include "geometry/arap_deformation.h"
 #include "geometry/disassembly.h"
@@ -22,6 +23,11 @@ struct DeformOptions {
     /// Find both bounds by the optimal-bound loop (then the two bounds above must be infinite).
     bool optimal_bound = false;
     int optimal_bound_rounds = 10;
+    /// The rounds stop when neither largest distortion drops by more than this share of it.
+    double optimal_bound_tolerance = 5e-4;
+    /// Rounds after the first solve regions around every simplex within this share of a bound
+    /// (OptimalBoundOptions::submesh_band), the rest of the pose fixed.
+    double optimal_bound_band = 0.5;
     /// Weight of E_m (the paper's mu = 1000).
     double mu = 1000.0;
     /// How the disassembly projects the start's A_i^0. Rotations are inside every pair of bounds

@@ -49,10 +49,6 @@ SimplexAssemblyOptions deform_solver_options(const DeformOptions& options) {
     solver.initialization = options.initialization;
     solver.max_time_seconds = options.max_time_seconds;
     solver.num_threads = options.num_threads;
-    // The submesh mode repairs the simplices over a bound, and a round of the optimal bound
-    // starts with none over (its bounds are the previous round's largest distortions): its
-    // rounds run in the full mode, as sa param's.
-    if (options.optimal_bound) solver.mode = SolveMode::kFull;
     return solver;
 }
 
@@ -67,6 +63,12 @@ DeformResult deform(const SimplicialMesh& mesh, const HandleTargets& handle_targ
     result.solver.max_time_seconds = std::max(options.max_time_seconds - watch.seconds(), 1e-3);
     OptimalBoundOptions rounds;
     rounds.rounds = options.optimal_bound ? options.optimal_bound_rounds : 1;
+    // As sa param's rounds: the first in the mode kAuto picks (it may have folds to repair), the
+    // others in the submesh mode around the simplices near either bound, each next bound just
+    // above the largest distortion so that the previous pose stays a feasible start.
+    rounds.tolerance = options.optimal_bound_tolerance;
+    rounds.submesh_band = options.optimal_bound_band;
+    rounds.margin = 1e-6;
     result.solve = optimal_bound(result.problem, result.solver, rounds, observer);
     result.seconds = watch.seconds();
     return result;
