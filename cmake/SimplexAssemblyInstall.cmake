@@ -82,7 +82,9 @@ foreach(layer IN LISTS sa_layers)
     install(DIRECTORY ${PROJECT_SOURCE_DIR}/${layer}/ DESTINATION ${SA_INSTALL_INCLUDEDIR}/${layer}
             FILES_MATCHING PATTERN "*.h"
             PATTERN "cli" EXCLUDE
-            PATTERN "*_plugin.h" EXCLUDE
+            PATTERN "openmesh_plugin.h" EXCLUDE
+            PATTERN "picture_plugin.h" EXCLUDE
+            PATTERN "vtk_io_plugin.h" EXCLUDE
             PATTERN "openmesh_traits.h" EXCLUDE
             PATTERN "vtk_capture.h" EXCLUDE
             PATTERN "vtk_scene.h" EXCLUDE
