@@ -6,6 +6,9 @@
 # fails the run; the input is kept in build-asan/fuzz/artifacts/ (fix the reader, then add it to
 # tests/fuzz/regressions/<target>/). Prints executions and time per target. CI's third phase
 # (.ci/run; BENCHMARKS.md, "Reliability").
+# The mutations follow libFuzzer's -seed=SA_FUZZ_SEED (1): from a fresh corpus a run explores the
+# same inputs each time, so that CI checks what was fuzzed before it landed and does not fail on a
+# discovery of its own; SA_FUZZ_SEED=0 draws a random seed (to search for new crashes).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -13,6 +16,7 @@ bash scripts/build-sanitized.sh fuzz_targets
 build=${SA_SANITIZER_BUILD:-build-asan}
 seconds=${SA_FUZZ_SECONDS:-60}
 jobs=${SA_FUZZ_JOBS:-$(nproc)}
+seed=${SA_FUZZ_SEED:-1}
 root=$(pwd)
 export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:detect_odr_violation=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
@@ -27,7 +31,7 @@ targets=$(ls "$fuzz/seeds")
 run_one() {
     local name=$1
     mkdir -p "$fuzz/corpus/$name"
-    if "$build/bin/fuzz_$name" -max_total_time="$seconds" -timeout=25 -rss_limit_mb=2048 \
+    if "$build/bin/fuzz_$name" -seed="$seed" -max_total_time="$seconds" -timeout=25 -rss_limit_mb=2048 \
         -print_final_stats=1 -artifact_prefix="$fuzz/artifacts/$name-" \
         "$fuzz/corpus/$name" "$fuzz/seeds/$name" > "$fuzz/logs/$name.log" 2>&1; then
         echo "$name ok"
@@ -36,7 +40,7 @@ run_one() {
     fi
 }
 export -f run_one
-export build fuzz seconds
+export build fuzz seconds seed
 start=$(date +%s)
 printf '%s\n' $targets | xargs -P "$jobs" -I{} bash -c 'run_one {}' | sort > "$fuzz/status.txt"
 elapsed=$(( $(date +%s) - start ))
