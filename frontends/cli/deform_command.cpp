@@ -34,10 +34,11 @@ nlohmann::json number(double v) {
     return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
 
-std::string format_bound(double K) {
+/// Four significant digits; "inf" for an absent bound.
+std::string format_number(double x) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.4g", K);
-    return std::isfinite(K) ? text : "inf";
+    std::snprintf(text, sizeof text, "%.4g", x);
+    return std::isfinite(x) ? text : "inf";
 }
 
 /// The distortion of a quality summary in one line.
@@ -58,7 +59,7 @@ struct RoundBounds {
 RoundBounds round_bounds(const BoundRound& r) {
     RoundBounds b{r.bound, kInfinity, r.max_distortion, 0.0};
     for (const BoundCheck& c : r.bounds) {
-        if (c.name != "volumetric") continue;
+        if (c.name != kVolumetricBarrierName) continue;
         b.volumetric_bound = c.bound;
         b.volumetric = c.max_distortion;
     }
@@ -273,19 +274,19 @@ int run_deform_command(const DeformArguments& a) {
 
     std::cout << "  ARAP start:  " << format_quality(result.start.quality) << " ("
               << result.start.arap.iterations << " iterations, " << result.start.arap.stop << ", "
-              << format_bound(result.start.seconds) << " s)\n";
+              << format_number(result.start.seconds) << " s)\n";
     for (std::size_t k = 0; k < result.solve.rounds.size(); ++k) {
         const BoundRound& round = result.solve.rounds[k];
         const RoundBounds b = round_bounds(round);
-        std::cout << "  round " << k << ": bounds conformal " << format_bound(b.conformal_bound)
-                  << ", volumetric " << format_bound(b.volumetric_bound) << " -> reached "
-                  << format_bound(b.conformal) << ", " << format_bound(b.volumetric) << "; "
-                  << round.iterations << " iterations, " << format_bound(round.time) << " s"
+        std::cout << "  round " << k << ": bounds conformal " << format_number(b.conformal_bound)
+                  << ", volumetric " << format_number(b.volumetric_bound) << " -> reached "
+                  << format_number(b.conformal) << ", " << format_number(b.volumetric) << "; "
+                  << round.iterations << " iterations, " << format_number(round.time) << " s"
                   << (round.success ? "" : " (not verified within its bounds)") << "\n";
     }
     std::cout << "  result:      " << format_quality(solved.final_quality) << "\n"
               << "  " << solved.message << "\n"
-              << "  total " << format_bound(result.seconds) << " s; wrote " << a.out
+              << "  total " << format_number(result.seconds) << " s; wrote " << a.out
               << (a.png.empty() ? "" : ", " + a.png) << (a.report.empty() ? "" : ", " + a.report)
               << "\n";
     return result.success() ? kExitVerified : kExitNotVerified;

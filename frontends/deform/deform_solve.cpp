@@ -16,10 +16,10 @@ void add_terms(MappingProblem& problem, const DeformOptions& options) {
     std::vector<Mat<D>> references = linear_parts<D>(problem.mesh, frames, problem.reference);
     problem.energies.push_back(simplex_term<D>(
         "E_m", DifferenceEnergy<D>(std::move(references), std::vector<double>{options.mu})));
-    problem.energies.push_back(
-        simplex_term<D>("volumetric", DistortionBarrier<D, BuiltinDistortion<D>>(
-                                          BuiltinDistortion<D>(DistortionType::kVolumetric),
-                                          BarrierOptions{options.volumetric_bound, 1.0})));
+    problem.energies.push_back(simplex_term<D>(
+        kVolumetricBarrierName, DistortionBarrier<D, BuiltinDistortion<D>>(
+                                    BuiltinDistortion<D>(DistortionType::kVolumetric),
+                                    BarrierOptions{options.volumetric_bound, 1.0})));
 }
 
 }  // namespace

@@ -20,6 +20,10 @@
 
 namespace sa {
 
+/// The name of the volumetric barrier among the problem's energies (its BoundCheck in the
+/// verification and the rounds).
+inline constexpr const char* kVolumetricBarrierName = "volumetric";
+
 struct DeformResult {
     DeformStart start;
     /// The problem Simplex Assembly solved: the rest mesh, the start as initial map and
