@@ -4,6 +4,7 @@
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
@@ -190,8 +191,14 @@ void check_ply_header(const std::string& path) {
             if (format_seen) fail("a second 'format' line in the PLY header");
             format_seen = true;
         } else if (keyword == "element") {
-            long long count = -1;
-            if (!(words >> name >> count) || count < 0)
+            // The count a whole word of digits, nothing after it: `element face 1property ...`
+            // read as a count of 1 made OpenMesh allocate without bound (found by fuzzing).
+            std::string count, extra;
+            words >> name >> count;
+            if (name.empty() || count.empty() || count.size() > 18 ||
+                !std::all_of(count.begin(), count.end(),
+                             [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }) ||
+                (words >> extra))
                 fail("expected 'element NAME COUNT' in the PLY header");
             if (!elements.insert(name).second) fail("a second PLY element '" + name + "'");
             element = true;

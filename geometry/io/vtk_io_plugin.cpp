@@ -333,12 +333,12 @@ bool is_vtk_keyword(std::string_view token, std::string_view keyword) {
 /// in the classic `n size` layout before version 5 and 5.x's OFFSETS/CONNECTIVITY from version 5
 /// on, and CELL_TYPES), checked before VTK reads them: VTK 9.1's reader dereferences a null string
 /// when such a section is cut short or holds a non-number (a crash found by fuzzing). Each section
-/// must hold as many integers as it declares, and a FIELD section before POINT_DATA and CELL_DATA
-/// as many numbers as its arrays declare. Keywords, the file type and the version are read
-/// as VTK reads them (is_vtk_keyword; the type is the first word after the title line, the
-/// version `%d.%d` after `# vtk DataFile Version`, 0 when there is none), so that no spelling VTK
-/// accepts escapes the check. The scan stops at POINT_DATA or CELL_DATA (names there are free
-/// text). Binary legacy files are left to VTK.
+/// must hold as many integers as it declares, POINTS three numbers per point, and a FIELD section
+/// before POINT_DATA and CELL_DATA as many numbers as its arrays declare. Keywords, the file type
+/// and the version are read as VTK reads them (is_vtk_keyword; the type is the first word after the
+/// title line, the version `%d.%d` after `# vtk DataFile Version`, 0 when there is none), so that
+/// no spelling VTK accepts escapes the check. The scan stops at POINT_DATA or CELL_DATA (names
+/// there are free text). Binary legacy files are left to VTK.
 void check_legacy_cells(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     std::string version_line, title, format;
@@ -420,6 +420,26 @@ void check_legacy_cells(const std::string& path) {
                         fail(array, "holds " + io::quote(tokens[i].substr(0, 40)) +
                                         " where a number belongs");
                 }
+            }
+            continue;
+        }
+        if (is_vtk_keyword(token, "points")) {
+            // POINTS COUNT TYPE, then 3 COUNT numbers: VTK 9.1 reads a short section's next
+            // word as a number and then dereferences what it did not read (`0.FieldData`: a
+            // crash found by fuzzing).
+            const long long points = count_at(i + 1, section, "'COUNT TYPE' after its name");
+            if (i + 2 >= tokens.size() ||
+                std::none_of(std::begin(kNumericTypes), std::end(kNumericTypes),
+                             [&](const char* k) { return is_vtk_keyword(tokens[i + 2], k); }))
+                fail(section, "has no numeric type");
+            i += 3;
+            if (points < 0 || points > (1LL << 31) ||
+                static_cast<unsigned long long>(3 * points) > tokens.size() - i)
+                fail(section, "is cut short (" + std::to_string(points) + " points declared)");
+            for (long long k = 0; k < 3 * points; ++k, ++i) {
+                if (!is_decimal_number(tokens[i]))
+                    fail(section, "holds " + io::quote(tokens[i].substr(0, 40)) +
+                                      " where a coordinate belongs");
             }
             continue;
         }
