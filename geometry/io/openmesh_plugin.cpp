@@ -154,6 +154,51 @@ void check_start(const std::string& path, bool stl, bool binary_stl) {
     }
 }
 
+// An ASCII PLY body against its header's `layout` (per element its count and per property 0 for
+// a scalar or the largest list length its count type allows), read from `in` after the header:
+// every scalar a number, every list a length within its type and no longer than what is left
+// of the file, then that many numbers. OpenMesh's reader reserves what a list length says before
+// reading it (`0 1888...83 1 1` after a short vertex row: an allocation past 2 GB found by
+// fuzzing).
+void check_ascii_ply_body(const std::string& path, std::istream& in, int header_lines,
+                          const std::vector<std::pair<long long, std::vector<long long>>>& layout) {
+    std::vector<std::string> tokens;
+    for (std::string token; in >> token;) tokens.push_back(std::move(token));
+    std::size_t next = 0;
+    const auto fail = [&](const std::string& what) {
+        throw InputError(path + ": the PLY body (after line " + std::to_string(header_lines) +
+                         ") " + what);
+    };
+    const auto number = [&]() {
+        if (next >= tokens.size()) fail("is cut short");
+        const std::string& t = tokens[next++];
+        char* end = nullptr;
+        std::strtod(t.c_str(), &end);
+        if (t.empty() || *end != '\0')
+            fail("holds '" + t.substr(0, 40) + "' where a number belongs");
+        return t;
+    };
+    for (const auto& [count, properties] : layout) {
+        for (long long row = 0; row < count; ++row) {
+            for (const long long largest : properties) {
+                if (largest == 0) {
+                    number();
+                    continue;
+                }
+                const std::string length = number();
+                const bool whole = std::all_of(length.begin(), length.end(), [](char c) {
+                    return std::isdigit(static_cast<unsigned char>(c));
+                });
+                if (!whole || length.size() > 10 || std::stoll(length) > largest ||
+                    static_cast<unsigned long long>(std::stoll(length)) > tokens.size() - next)
+                    fail("has a list of length '" + length.substr(0, 40) +
+                         "': not a whole number its type allows, or longer than the file");
+                for (long long k = std::stoll(length); k > 0; --k) number();
+            }
+        }
+    }
+}
+
 // A PLY header's lines, checked before OpenMesh parses it (its reader writes through a missing
 // element when a `property` line comes before any `element` line: a crash found by fuzzing):
 // each line a known keyword, one well-formed `format` line, every property after an element, an
@@ -162,8 +207,11 @@ void check_ply_header(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     std::string line;
     std::getline(in, line);  // `ply`, checked by check_start
-    bool element = false, format_seen = false;
+    bool element = false, format_seen = false, ascii = false;
     std::set<std::string> elements;
+    // Per element: its count and, per property, the largest list length its count type allows
+    // (0 for a scalar property).
+    std::vector<std::pair<long long, std::vector<long long>>> layout;
     for (int number = 2; std::getline(in, line); ++number) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
         std::istringstream words(line);
@@ -172,24 +220,30 @@ void check_ply_header(const std::string& path) {
         const auto fail = [&](const std::string& what) {
             throw InputError(path + ":" + std::to_string(number) + ": " + what);
         };
-        if (keyword == "end_header") return;
+        if (keyword == "end_header") {
+            if (ascii) check_ascii_ply_body(path, in, number, layout);
+            return;
+        }
         if (keyword == "format") {
             // `format FORMAT VERSION`: OpenMesh's reader loops for ever on a version that is not
             // a number (`format ascii float z`: found by fuzzing).
             std::string type, version, extra;
             words >> type >> version;
             char* end = nullptr;
-            const bool number = !version.empty() &&
-                                (std::strtod(version.c_str(), &end), *end == '\0') &&
+            // PLY has one version, 1.0 (a version of 150 digits made OpenMesh's warnings grow
+            // past 2 GB: found by fuzzing).
+            const bool number = !version.empty() && version.size() <= 8 &&
+                                std::strtod(version.c_str(), &end) == 1.0 && *end == '\0' &&
                                 std::isdigit(static_cast<unsigned char>(version[0]));
             if ((type != "ascii" && type != "binary_little_endian" &&
                  type != "binary_big_endian") ||
                 !number || (words >> extra))
                 fail(
-                    "expected 'format ascii|binary_little_endian|binary_big_endian VERSION' in "
-                    "the PLY header");
+                    "expected 'format ascii|binary_little_endian|binary_big_endian 1.0' in the "
+                    "PLY header");
             if (format_seen) fail("a second 'format' line in the PLY header");
             format_seen = true;
+            ascii = type == "ascii";
         } else if (keyword == "element") {
             // The count a whole word of digits, nothing after it: `element face 1property ...`
             // read as a count of 1 made OpenMesh allocate without bound (found by fuzzing).
@@ -202,6 +256,7 @@ void check_ply_header(const std::string& path) {
                 fail("expected 'element NAME COUNT' in the PLY header");
             if (!elements.insert(name).second) fail("a second PLY element '" + name + "'");
             element = true;
+            layout.push_back({std::stoll(count), {}});
         } else if (keyword == "property") {
             if (!element) fail("a PLY property before any element");
             // `property TYPE NAME` or `property list COUNT_TYPE TYPE NAME`, with PLY's types
@@ -220,6 +275,12 @@ void check_ply_header(const std::string& path) {
                 fail(
                     "expected 'property TYPE NAME' or 'property list TYPE TYPE NAME' with PLY "
                     "types (char, uchar, ..., float, double)");
+            const std::string& count_type = list ? rest[1] : rest[0];
+            const bool small = count_type == "char" || count_type == "uchar" ||
+                               count_type == "int8" || count_type == "uint8";
+            const bool medium = count_type == "short" || count_type == "ushort" ||
+                                count_type == "int16" || count_type == "uint16";
+            layout.back().second.push_back(!list ? 0 : small ? 255 : medium ? 65535 : 1LL << 31);
         } else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty()) {
             std::string shown;
             for (const char c : keyword.substr(0, 40)) {
