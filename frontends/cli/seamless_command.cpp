@@ -28,10 +28,6 @@ namespace sa::cli {
 
 namespace {
 
-std::string with_extension(const std::string& path, const std::string& ext) {
-    return std::filesystem::path(path).replace_extension(ext).string();
-}
-
 /// The cut mesh in space with (u, v), the fields, curls and distortion: for ParaView.
 void write_seamless_vtu(const std::string& path, const SimplicialMesh& mesh,
                         const SeamlessResult& r) {
