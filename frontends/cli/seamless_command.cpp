@@ -105,6 +105,7 @@ CLI::App* add_seamless_command(CLI::App& app, SeamlessArguments& a) {
                     "wall-clock limit in seconds on the whole run (the field's assembly and its "
                     "local repairs take what is left); the map reached by then is verified, "
                     "written and reported as it is")
+        ->check(number_or_inf_at_least(0.0, true))
         ->capture_default_str();
     cmd->add_option("--out", a.out, "the surface with per-corner texture coordinates (.obj)")
         ->required();

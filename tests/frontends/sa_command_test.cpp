@@ -210,6 +210,24 @@ TEST_F(SaCommand, DemoRepairsTheFoldedHarmonicMap) {
     EXPECT_FALSE(fs::exists(path("plain/initial.png")));
 }
 
+TEST_F(SaCommand, EveryLongCommandTakesMaxTime) {
+    // The same option with the same check everywhere: a number or inf > 0, in the help.
+    for (const char* command : {"map", "param", "seamless", "deform", "polycube"}) {
+        const Outcome help = sa(std::string(command) + " --help");
+        EXPECT_NE(help.out.find("--max-time FLOAT:a number or inf > 0=inf"), std::string::npos)
+            << command << ":\n"
+            << help.out;
+        for (const char* bad : {"0", "-1", "nan"}) {
+            const Outcome r = sa(std::string(command) + " --max-time " + bad);
+            EXPECT_EQ(r.status, 2) << command;
+            EXPECT_EQ(r.err, std::string("sa: error: --max-time: must be a number or inf > 0, "
+                                         "found '") +
+                                 bad + "'\n")
+                << command;
+        }
+    }
+}
+
 TEST_F(SaCommand, ParamWritesAVerifiedUvMapAndRejectsANonDisk) {
     // A bumpy square: a disk surface in space.
     SimplicialMesh mesh = grid_triangles(12, 12);
