@@ -115,7 +115,7 @@ def main():
         out = os.path.join(work, c['name'].replace('/', '-') + '.vtk')
         report_path = out[:-4] + '.json'
         command = ([os.path.join(a.bin, 'sa'), 'deform', '--rest', c['rest']] + c['args'] +
-                   ['--out', out, '--report', report_path, '--force', '--quiet'] +
+                   ['--out', out, '--report', report_path, '--no-png', '--force', '--quiet'] +
                    (['--optimal-bound'] if a.optimal_bound else []) + a.extra)
         r = run_measured(command, a.timeout)
         report = None

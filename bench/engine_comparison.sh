@@ -13,11 +13,11 @@ for c in cube stgc-2d stgc-3d param2d sea-2d; do
     run map-$c-vsa map --rest $D/tlc/$c/input --out $O/map-$c-vsa.$ext --variant vertex --mode full --no-png
     run map-$c-novs map --rest $D/tlc/$c/input --out $O/map-$c-novs.$ext --no-vertex-stage --mode full --no-png
 done
-run param-camel-ob param --mesh $D/param/camel_b.obj --optimal-bound --out $O/param-camel-ob.obj
-run param-camel-inj param --mesh $D/param/camel_b.obj --free-boundary-injective --out $O/param-camel-inj.obj
-run param-lion-inj param --mesh $D/param/lion.off --free-boundary-injective --out $O/param-lion-inj.obj
-run param-face-ob param --mesh $D/param/face.obj --optimal-bound --out $O/param-face-ob.obj
-run param-hand param --mesh $D/param/hand-uv.obj --out $O/param-hand.obj
+run param-camel-ob param --mesh $D/param/camel_b.obj --optimal-bound --out $O/param-camel-ob.obj --no-png
+run param-camel-inj param --mesh $D/param/camel_b.obj --free-boundary-injective --out $O/param-camel-inj.obj --no-png
+run param-lion-inj param --mesh $D/param/lion.off --free-boundary-injective --out $O/param-lion-inj.obj --no-png
+run param-face-ob param --mesh $D/param/face.obj --optimal-bound --out $O/param-face-ob.obj --no-png
+run param-hand param --mesh $D/param/hand-uv.obj --out $O/param-hand.obj --no-png
 run seam-inspired seamless --mesh $D/frame-fields/inspired_mesh.obj --field $D/frame-fields/inspired_mesh.dmat --out $O/seam-inspired.obj --no-png
 run seam-3holes seamless --mesh $D/surfaces/3holes.off --out $O/seam-3holes.obj --no-png
 run seam-cow seamless --mesh $D/surfaces/cow.off --out $O/seam-cow.obj --no-png

@@ -39,8 +39,8 @@ ROOT = os.path.dirname(HERE)
 def run_param(a, mesh, args, work, name):
     out = os.path.join(work, name + '.obj')
     report = out + '.json'
-    command = [a.sa, 'param', '--mesh', mesh] + args + ['--out', out, '--report', report, '--force',
-                                                        '--quiet'] + a.extra
+    command = [a.sa, 'param', '--mesh', mesh] + args + ['--out', out, '--report', report, '--no-png',
+                                                        '--force', '--quiet'] + a.extra
     print('running %s %s ...' % (name, ' '.join(args)), file=sys.stderr, flush=True)
     r = run_measured(command, a.timeout)
     row = dict(name=name)

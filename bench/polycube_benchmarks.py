@@ -60,8 +60,8 @@ def run_solve(a, name, mesh, labels, work):
     args = [os.path.join(folder, x) if x.endswith(('.flags', '.txt', '.obj')) else x for x in labels]
     bound = ['--bound', a.bound] if a.bound else ['--optimal-bound']
     command = ([a.sa, 'polycube', '--mesh', os.path.join(folder, mesh)] + args + bound +
-               ['--out', out, '--report', report, '--max-time', str(a.max_time), '--quiet',
-                '--force'])
+               ['--out', out, '--report', report, '--max-time', str(a.max_time), '--no-png',
+                '--quiet', '--force'])
     print('running %s ...' % name, file=sys.stderr, flush=True)
     r = run_measured(command, a.max_time * 2 + 120)
     row = dict(name=name)

@@ -144,7 +144,8 @@ CLI::App* add_deform_command(CLI::App& app, DeformArguments& a) {
         ->required();
     deform->add_option("--png", a.png,
                        "a picture of the pose: the surface coloured by isometric distortion, "
-                       "inverted simplices in red");
+                       "inverted simplices in red (default: --out with .png)");
+    deform->add_flag("--no-png", a.no_png, "do not draw the picture");
     deform->add_option("--report", a.report, "JSON report");
     deform
         ->add_option("--max-time", a.max_time,
@@ -200,18 +201,18 @@ DeformOptions deform_options(const DeformArguments& a) {
     return options;
 }
 
-void plan_deform_files(const DeformArguments& a, OutputPlan& plan) {
+PictureOutput plan_deform_files(const DeformArguments& a, OutputPlan& plan) {
+    PictureOutput picture(a.png, a.no_png, a.out);
     plan.input("--rest", a.rest);
     plan.input("--handles", a.handles);
     plan.input("--targets", a.targets);
     plan.file("--out", a.out);
-    plan.file("--png", a.png);
+    picture.plan(plan);
     plan.file("--report", a.report);
     plan.check();
-    if (!a.png.empty() && extension(a.png) != ".png")
-        throw InvalidArgumentError("--png " + a.png + ": expected a .png file name");
     if (!a.report.empty() && extension(a.report) != ".json")
         throw InvalidArgumentError("--report " + a.report + ": expected a .json file name");
+    return picture;
 }
 
 DeformInput read_deform_input(const DeformArguments& a) {
@@ -241,7 +242,7 @@ int run_deform_command(const DeformArguments& a) {
     // Options and output locations first: a typo should not cost a solve.
     const DeformOptions options = deform_options(a);
     OutputPlan plan(a.force);
-    plan_deform_files(a, plan);
+    PictureOutput picture = plan_deform_files(a, plan);
     reserve_blas_buffer();
     const DeformInput input = read_deform_input(a);
     for (const std::string& warning : input.warnings)
@@ -263,18 +264,19 @@ int run_deform_command(const DeformArguments& a) {
     set_activity("writing the outputs");
     plan.write(a.out,
                [&](const std::string& path) { write_map_result(path, result.problem, solved); });
-    if (!a.png.empty()) {
-        PosePicture picture;
-        for (Index s = 0; s < result.start.quality.simplices; ++s)
-            if (result.start.quality.per_simplex[s].inverted) picture.marked.push_back(s);
-        picture.marked_label = "inverted by the ARAP start";
-        plan.write(a.png, [&](const std::string& path) {
-            write_pose_png(path, input.mesh, solved.positions, picture);
-        });
-    }
     if (!a.report.empty()) {
         const nlohmann::json report = deform_report(a, result);
         plan.write(a.report, [&](const std::string& path) { write_json(path, report); });
+    }
+    // The picture last, after the solve.
+    if (!picture.path().empty()) {
+        PosePicture pose;
+        for (Index s = 0; s < result.start.quality.simplices; ++s)
+            if (result.start.quality.per_simplex[s].inverted) pose.marked.push_back(s);
+        pose.marked_label = "inverted by the ARAP start";
+        picture.draw(plan, [&](const std::string& path) {
+            write_pose_png(path, input.mesh, solved.positions, pose);
+        });
     }
     plan.commit();
 
@@ -293,8 +295,8 @@ int run_deform_command(const DeformArguments& a) {
     std::cout << "  result:      " << format_quality(solved.final_quality) << "\n"
               << "  " << solved.message << "\n"
               << "  total " << format_number(result.seconds) << " s; wrote " << a.out
-              << (a.png.empty() ? "" : ", " + a.png) << (a.report.empty() ? "" : ", " + a.report)
-              << "\n";
+              << picture.wrote() << (a.report.empty() ? "" : ", " + a.report) << "\n";
+    picture.warn(std::cerr);
     return result.success() ? kExitVerified : kExitNotVerified;
 }
 

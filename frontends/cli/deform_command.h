@@ -6,7 +6,7 @@
 //
 //   sa deform --rest FILE [--handles FILE] --targets FILE
 //             [--optimal-bound | --bound-conformal K1 --bound-volumetric K2] --out FILE
-//             [--png FILE] [--report FILE] [--initialization NAME] [--mu M] ...
+//             [--png FILE | --no-png] [--report FILE] [--initialization NAME] [--mu M] ...
 
 #include <CLI/CLI.hpp>
 #include <string>
@@ -29,7 +29,7 @@ struct DeformArguments {
     double start_tolerance = 1e-9;
     double max_time = kInfinity;
     int threads = 0;
-    bool force = false, quiet = false;
+    bool force = false, quiet = false, no_png = false;
 };
 
 /// Adds the subcommand to `app`; `arguments` is filled when it is parsed.
@@ -48,8 +48,9 @@ struct DeformInput {
 
 /// Declares the inputs and outputs on `plan` and checks them (OutputPlan::check(): two outputs
 /// with one path, an output naming an input, an unwritable location, an existing file without
-/// --force), and the extensions of --png and --report. Before anything is read.
-void plan_deform_files(const DeformArguments& arguments, OutputPlan& plan);
+/// --force), and the extensions of --png and --report. Before anything is read. Returns the
+/// picture (by default --out with .png), to draw after the solve.
+PictureOutput plan_deform_files(const DeformArguments& arguments, OutputPlan& plan);
 
 /// Reads and checks the rest mesh (planar triangles or tetrahedra, validated), the handles and
 /// their targets (frontends/deform/handle_targets.h), and refuses an --out format that cannot

@@ -187,16 +187,14 @@ int run_map_command(const MapArguments& a) {
     options.max_time_seconds = a.max_time;
     options.num_threads = a.threads;
     options.validate();
-    const std::string png = a.no_png ? "" : a.png.empty() ? with_extension(a.out, ".png") : a.png;
-    if (!png.empty() && extension(png) != ".png")
-        throw InvalidArgumentError(png + ": --png takes a .png file");
+    PictureOutput picture(a.png, a.no_png, a.out);
     OutputPlan plan(a.force);
     plan.input("--rest", a.rest);
     plan.input("--init", a.init);
     plan.input("--handles", a.handles);
     plan.input("--targets", a.targets);
     plan.file("--out", a.out);
-    plan.file(a.png.empty() ? "--png (from --out)" : "--png", png);
+    picture.plan(plan);
     plan.file("--report", a.report);
     plan.folder("--record", a.record, {"assembly.pvd"});
     plan.check();
@@ -290,21 +288,8 @@ int run_map_command(const MapArguments& a) {
         const nlohmann::json report = map_report(problem, options, result);
         plan.write(a.report, [&](const std::string& path) { write_json(path, report); });
     }
-    // The picture last, after the solve; a picture that cannot be drawn (no OpenGL, no X server)
-    // costs the run nothing else: the map is written and one line says why.
-    std::string picture_written, picture_failed;
-    if (!png.empty()) {
-        set_activity("drawing --png " + png);
-        const Stopwatch clock;
-        try {
-            plan.write(png, [&](const std::string& path) { write_map_png(path, problem, result); });
-            char took[64];
-            std::snprintf(took, sizeof took, " (%.2f s)", clock.seconds());
-            picture_written = png + took;
-        } catch (const Error& e) {
-            picture_failed = one_line(e.what());
-        }
-    }
+    // The picture last, after the solve.
+    picture.draw(plan, [&](const std::string& path) { write_map_png(path, problem, result); });
     std::string series;
     if (recorder) {
         const auto lock = output_lock();
@@ -325,11 +310,9 @@ int run_map_command(const MapArguments& a) {
               << " variables, " << result.newton.num_steps() + result.vertex_stage.num_steps()
               << " iterations, time " << times << "\n"
               << "  " << result.message << "\n"
-              << "  wrote " << a.out << (picture_written.empty() ? "" : ", " + picture_written)
-              << (a.report.empty() ? "" : ", " + a.report) << (series.empty() ? "" : ", " + series)
-              << "\n";
-    if (!picture_failed.empty())
-        std::cerr << "sa: warning: no picture " << png << ": " << picture_failed << '\n';
+              << "  wrote " << a.out << picture.wrote() << (a.report.empty() ? "" : ", " + a.report)
+              << (series.empty() ? "" : ", " + series) << "\n";
+    picture.warn(std::cerr);
     return result.success ? kExitVerified : kExitNotVerified;
 }
 

@@ -5,10 +5,14 @@
 
 #include <cctype>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 
+#include "frontends/cli/cli_support.h"
+#include "frontends/cli/out_of_memory.h"
 #include "optim/errors.h"
+#include "optim/stopwatch.h"
 
 namespace sa::cli {
 namespace {
@@ -238,6 +242,43 @@ void OutputPlan::remove_outputs() const {
         }
         for (const fs::path& entry : added) fs::remove_all(entry, error);
     }
+}
+
+PictureOutput::PictureOutput(const std::string& png, bool no_png, const std::string& out)
+    : path_(no_png        ? ""
+            : png.empty() ? with_extension(out, ".png")
+                          : png),
+      option_(png.empty() ? "--png (from --out)" : "--png") {
+    if (!path_.empty() && extension(path_) != ".png")
+        throw InvalidArgumentError(option_ + " " + path_ + ": expected a .png file");
+}
+
+void PictureOutput::plan(OutputPlan& plan) const {
+    plan.file(option_, path_);
+}
+
+void PictureOutput::draw(OutputPlan& plan, const std::function<void(const std::string&)>& draw) {
+    if (path_.empty()) return;
+    set_activity("drawing --png " + path_);
+    const Stopwatch clock;
+    try {
+        plan.write(path_, draw);
+        char took[64];
+        std::snprintf(took, sizeof took, " (%.2f s)", clock.seconds());
+        drawn_ = path_ + took;
+    } catch (const Error& e) {
+        failure_ = one_line(e.what());
+        std::error_code error;
+        fs::remove(plan.staged(path_), error);  // a picture begun is not committed
+    }
+}
+
+std::string PictureOutput::wrote() const {
+    return drawn_.empty() ? "" : ", " + drawn_;
+}
+
+void PictureOutput::warn(std::ostream& out) const {
+    if (!failure_.empty()) out << "sa: warning: no picture " << path_ << ": " << failure_ << '\n';
 }
 
 }  // namespace sa::cli

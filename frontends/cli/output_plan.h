@@ -21,6 +21,8 @@
 // hidden file, a folder the run created, and what the run added to a folder that existed: no
 // output is left and existing files keep their content.
 
+#include <functional>
+#include <ostream>
 #include <set>
 #include <string>
 #include <vector>
@@ -89,6 +91,38 @@ class OutputPlan {
     bool committed_ = false;
     std::vector<Entry> inputs_, files_;
     std::vector<Folder> folders_;
+};
+
+/// The picture a command draws beside its main output, the same in every command: `--png P`,
+/// by default `--out` with .png, none with `--no-png`. Its path is planned with the other
+/// outputs (checked before the solve); drawing it may fail (no OpenGL, no X server) without
+/// costing the run anything else: the other outputs are written and one warning line says why.
+///
+///   const PictureOutput picture(a.png, a.no_png, a.out);  // throws unless P is a .png
+///   picture.plan(plan);                                    // before plan.check()
+///   ... solve, write the other outputs ...
+///   picture.draw(plan, [&](const std::string& path) { write_..._png(path, ...); });
+///   plan.commit();
+///   std::cout << "wrote " << a.out << picture.wrote() << ...;
+///   picture.warn(std::cerr);                               // after the summary
+class PictureOutput {
+  public:
+    /// Throws InvalidArgumentError `--png P: expected a .png file` for another extension.
+    PictureOutput(const std::string& png, bool no_png, const std::string& out);
+
+    /// The picture's path; "" with --no-png.
+    const std::string& path() const { return path_; }
+    /// Declares the picture on `plan` (nothing with --no-png).
+    void plan(OutputPlan& plan) const;
+    /// Calls `draw(staged path)` through plan.write(); an sa::Error it throws is kept for warn().
+    void draw(OutputPlan& plan, const std::function<void(const std::string&)>& draw);
+    /// ", PATH (T s)" once drawn; "" otherwise.
+    std::string wrote() const;
+    /// Writes `sa: warning: no picture PATH: WHY` when drawing failed.
+    void warn(std::ostream& out) const;
+
+  private:
+    std::string path_, option_, drawn_, failure_;
 };
 
 }  // namespace sa::cli

@@ -96,7 +96,9 @@ CLI::App* add_param_command(CLI::App& app, ParamArguments& a) {
         ->required();
     param->add_option("--layout", a.layout, "the UV layout as .vtu/.vtk, with per-face distortion");
     param->add_option("--png", a.png,
-                      "a picture of the UV layout coloured by conformal distortion");
+                      "a picture of the UV layout coloured by conformal distortion, inverted "
+                      "triangles in red (default: --out with .png)");
+    param->add_flag("--no-png", a.no_png, "do not draw the picture");
     param->add_option("--report", a.report, "JSON report");
     param->add_flag("--force", a.force, "overwrite existing output files");
     param->add_flag("--quiet", a.quiet, "no progress rows on stderr");
@@ -140,6 +142,7 @@ int run_param_command(const ParamArguments& a) {
     if (!a.layout.empty() && extension(a.layout) != ".vtu" && extension(a.layout) != ".vtk") {
         throw InvalidArgumentError(a.layout + ": the layout is written as .vtu or .vtk");
     }
+    PictureOutput picture(a.png, a.no_png, a.out);
     const bool named =
         std::find(kInitialMaps.begin(), kInitialMaps.end(), a.init) != kInitialMaps.end();
     OutputPlan plan(a.force);
@@ -147,7 +150,7 @@ int run_param_command(const ParamArguments& a) {
     if (!named) plan.input("--init", a.init);
     plan.file("--out", a.out);
     plan.file("--layout", a.layout);
-    plan.file("--png", a.png);
+    picture.plan(plan);
     plan.file("--report", a.report);
     plan.check();
     reserve_blas_buffer();
@@ -212,25 +215,25 @@ int run_param_command(const ParamArguments& a) {
                                           : write_vtk(path, r.uv, mesh.simplices, {}, cells);
         });
     }
-    if (!a.png.empty()) {
+    if (!picture.path().empty()) {
         Eigen::VectorXd values(mesh.num_simplices());
         std::vector<unsigned char> inverted(mesh.num_simplices());
         for (Index f = 0; f < mesh.num_simplices(); ++f) {
             values[f] = q.per_simplex[f].conformal;
             inverted[f] = q.per_simplex[f].inverted || q.per_simplex[f].degenerate;
         }
-        LayoutPicture picture;
+        LayoutPicture layout;
         char title[256];
         std::snprintf(title, sizeof title,
                       "%s: %ld faces, %ld foldovers; conformal distortion max %.3g, mean %.4g",
                       std::filesystem::path(a.mesh).filename().c_str(), long(mesh.num_simplices()),
                       long(q.inverted), q.conformal.max, q.conformal.mean);
-        picture.title = title;
-        picture.value_name = "conformal distortion (sigma max / sigma min)";
-        picture.low = 1.0;
-        picture.high = std::max(1.1, std::min(q.conformal.max, 10.0));
-        plan.write(a.png, [&](const std::string& path) {
-            write_layout_png(path, r.uv, mesh.simplices, values, picture, inverted);
+        layout.title = title;
+        layout.value_name = "conformal distortion (sigma max / sigma min)";
+        layout.low = 1.0;
+        layout.high = std::max(1.1, std::min(q.conformal.max, 10.0));
+        picture.draw(plan, [&](const std::string& path) {
+            write_layout_png(path, r.uv, mesh.simplices, values, layout, inverted);
         });
     }
     const double output_time = stage.lap();
@@ -322,8 +325,9 @@ int run_param_command(const ParamArguments& a) {
                   total.seconds(), read_time, r.initial_map_time, solve_time - r.initial_map_time,
                   output_time, peak_memory_gb());
     std::cout << line << "  " << r.message << "\n  wrote " << a.out
-              << (a.layout.empty() ? "" : ", " + a.layout) << (a.png.empty() ? "" : ", " + a.png)
+              << (a.layout.empty() ? "" : ", " + a.layout) << picture.wrote()
               << (a.report.empty() ? "" : ", " + a.report) << "\n";
+    picture.warn(std::cerr);
     return r.success ? kExitVerified : kExitNotVerified;
 }
 

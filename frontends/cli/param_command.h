@@ -16,7 +16,7 @@ struct ParamArguments {
     int optimal_bound_rounds = 0, threads = 0, max_iterations = 200;
     double max_time = kInfinity, optimal_bound_tolerance = 5e-4;
     bool optimal_bound = false, free_boundary_injective = false, force = false, quiet = false;
-    bool no_fallback = false;
+    bool no_fallback = false, no_png = false;
 };
 
 CLI::App* add_param_command(CLI::App& app, ParamArguments& arguments);

@@ -32,6 +32,11 @@ void check_input_file(const char* option, const std::string& path) {
     if (!std::ifstream(path)) throw InputError(std::string(option) + " " + path + ": cannot open");
 }
 
+/// The caption of the picture.
+std::string polycube_picture_title(const PolycubeVerification& verification) {
+    return std::string("PolyCube, ") + (verification.passed ? "verified" : "NOT verified");
+}
+
 }  // namespace
 
 CLI::App* add_polycube_command(CLI::App& app, PolycubeArguments& a) {
@@ -55,7 +60,9 @@ CLI::App* add_polycube_command(CLI::App& app, PolycubeArguments& a) {
         ->required();
     polycube->add_option("--vtu", a.vtu, "the map with per-tet distortion and facet labels");
     polycube->add_option("--png", a.png,
-                         "a picture of the PolyCube coloured by conformal distortion");
+                         "a picture of the PolyCube coloured by conformal distortion (default: "
+                         "--out with .png)");
+    polycube->add_flag("--no-png", a.no_png, "do not draw the picture");
     polycube->add_option("--report", a.report, "JSON report");
     polycube
         ->add_option("--max-time", a.max_time,
@@ -114,14 +121,11 @@ PolycubePlan check_polycube_arguments(const PolycubeArguments& a) {
     if (!a.vtu.empty() && extension(a.vtu) != ".vtu" && extension(a.vtu) != ".vtk") {
         throw InvalidArgumentError("--vtu " + a.vtu + ": expected a .vtu or .vtk file");
     }
-    if (!a.png.empty() && extension(a.png) != ".png") {
-        throw InvalidArgumentError("--png " + a.png + ": expected a .png file");
-    }
     if (!a.report.empty() && extension(a.report) != ".json") {
         throw InvalidArgumentError("--report " + a.report + ": expected a .json file");
     }
     plan.vtu = a.vtu;
-    plan.png = a.png;
+    plan.png = PictureOutput(a.png, a.no_png, a.out).path();
     plan.report = a.report;
     std::set<std::string> seen;
     for (const std::string* path :
@@ -173,9 +177,8 @@ void write_polycube_outputs(const PolycubePlan& plan, const PreparedPolycube& pr
         write_polycube_vtu(path, prepared, positions, verification);
     });
     write(plan.png, [&](const std::string& path) {
-        write_polycube_png(
-            path, prepared, positions, verification,
-            std::string("PolyCube, ") + (verification.passed ? "verified" : "NOT verified"));
+        write_polycube_png(path, prepared, positions, verification,
+                           polycube_picture_title(verification));
     });
     if (!plan.report.empty()) {
         report["preparation"] = polycube_preparation_json(prepared);
@@ -212,7 +215,8 @@ int run_polycube_command(const PolycubeArguments& arguments) {
     outputs.file("--out (rest mesh)", plan.rest);
     outputs.file("--out (flags)", plan.flags);
     outputs.file("--vtu", plan.vtu);
-    outputs.file("--png", plan.png);
+    PictureOutput picture(arguments.png, arguments.no_png, arguments.out);
+    picture.plan(outputs);
     outputs.file("--report", plan.report);
     outputs.check();
     const Logger logger = stderr_logger(plan.quiet);
@@ -257,7 +261,13 @@ int run_polycube_command(const PolycubeArguments& arguments) {
                        {"total", total.seconds()}};
     report["peak_memory_gb"] = peak_memory_gb();
     set_activity("writing the outputs");
-    write_polycube_outputs(plan, prepared, solve.positions, solve.verification, report, &outputs);
+    PolycubePlan files = plan;
+    files.png.clear();  // drawn below: a picture that cannot be drawn costs the run nothing else
+    write_polycube_outputs(files, prepared, solve.positions, solve.verification, report, &outputs);
+    picture.draw(outputs, [&](const std::string& path) {
+        write_polycube_png(path, prepared, solve.positions, solve.verification,
+                           polycube_picture_title(solve.verification));
+    });
     outputs.commit();
     std::cout << solve.message << "\n"
               << "conformal distortion max " << solve.verification.quality.conformal.max
@@ -266,7 +276,10 @@ int run_polycube_command(const PolycubeArguments& arguments) {
               << (solve.rounds.empty() ? std::string()
                                        : std::to_string(solve.rounds.size()) + " rounds, ")
               << "time " << total.seconds() << " s\n"
-              << "wrote " << plan.out << ", " << plan.rest << ", " << plan.flags << "\n";
+              << "wrote " << plan.out << ", " << plan.rest << ", " << plan.flags
+              << (plan.vtu.empty() ? "" : ", " + plan.vtu) << picture.wrote()
+              << (plan.report.empty() ? "" : ", " + plan.report) << "\n";
+    picture.warn(std::cerr);
     return solve.success ? kExitVerified : kExitNotVerified;
 }
 

@@ -10,7 +10,8 @@
 //   // exit 0 only when solve.success (the driver's and verify_polycube()'s checks)
 //
 //   sa polycube --mesh TETS [--labels FLAGS | --labels LABELS.txt --label-surface SURFACE.obj]
-//               [--bound K | --optimal-bound] --out OUT.mesh [--vtu V.vtu] [--png P.png]
+//               [--bound K | --optimal-bound] --out OUT.mesh [--vtu V.vtu]
+//               [--png P.png | --no-png]
 //               [--report R.json] [--max-time S] [--threads N] [--force] [--quiet]
 
 #include <CLI/CLI.hpp>
@@ -27,7 +28,7 @@ struct PolycubeArguments {
     std::string mesh, labels, label_surface, bound = "inf", out, vtu, png, report;
     double max_time = kInfinity;  ///< seconds, > 0; inf: no limit
     int threads = 0;
-    bool optimal_bound = false, force = false, quiet = false;
+    bool optimal_bound = false, force = false, quiet = false, no_png = false;
 };
 
 /// Adds the `polycube` subcommand to `app`, filling `arguments` when parsed.
@@ -41,15 +42,16 @@ struct PolycubePlan {
     bool optimal_bound = false;
     double max_time = kInfinity;
     int threads = 0;
-    std::string out, rest, flags, vtu, png, report;  ///< rest and flags: beside out
+    std::string out, rest, flags, vtu, png, report;  ///< rest, flags and png: beside out
     bool quiet = false;
 };
 
 /// Checks the arguments before anything is read or written: the mesh and label files exist,
 /// --label-surface only with --labels, --bound a number > 1 or inf and not with --optimal-bound,
-/// --out a .mesh (OUT.rest.mesh and OUT.flags go beside it), --vtu .vtu or .vtk, --png .png,
-/// --report .json, every output distinct and, without --force, not existing, --max-time > 0,
-/// --threads >= 0. Throws InvalidArgumentError or InputError naming the option or file.
+/// --out a .mesh (OUT.rest.mesh and OUT.flags go beside it), --vtu .vtu or .vtk, --png .png
+/// (by default OUT.png; none with --no-png), --report .json, every output distinct and, without
+/// --force, not existing, --max-time > 0, --threads >= 0. Throws InvalidArgumentError or InputError
+/// naming the option or file.
 PolycubePlan check_polycube_arguments(const PolycubeArguments& arguments);
 
 /// Reads plan.mesh and prepares it with plan.labels (prepare_polycube()); warnings and progress

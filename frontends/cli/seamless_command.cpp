@@ -130,18 +130,16 @@ int run_seamless_command(const SeamlessArguments& a) {
     if (!a.field.empty() && !a.constraints.empty())
         throw InvalidArgumentError("give --field or --constraints, not both");
     const std::string vtu = a.no_vtu ? "" : a.vtu.empty() ? with_extension(a.out, ".vtu") : a.vtu;
-    const std::string png = a.no_png ? "" : a.png.empty() ? with_extension(a.out, ".png") : a.png;
+    PictureOutput picture(a.png, a.no_png, a.out);
     if (!vtu.empty() && extension(vtu) != ".vtu")
         throw InvalidArgumentError(vtu + ": --vtu takes a .vtu file");
-    if (!png.empty() && extension(png) != ".png")
-        throw InvalidArgumentError(png + ": --png takes a .png file");
     OutputPlan plan(a.force);
     plan.input("--mesh", a.mesh);
     plan.input("--field", a.field);
     for (const std::string& constraint : a.constraints) plan.input("--constraints", constraint);
     plan.file("--out", a.out);
     plan.file(a.vtu.empty() ? "--vtu (from --out)" : "--vtu", vtu);
-    plan.file(a.png.empty() ? "--png (from --out)" : "--png", png);
+    picture.plan(plan);
     plan.file("--report", a.report);
     plan.check();
     reserve_blas_buffer();
@@ -216,20 +214,20 @@ int run_seamless_command(const SeamlessArguments& a) {
     });
     if (!vtu.empty())
         plan.write(vtu, [&](const std::string& path) { write_seamless_vtu(path, mesh, r); });
-    if (!png.empty()) {
+    if (!picture.path().empty()) {
         Eigen::MatrixXd cut_positions(cut.mesh.num_vertices(), mesh.vertices.cols());
         for (Index c = 0; c < cut.mesh.num_vertices(); ++c)
             cut_positions.row(c) = mesh.vertices.row(cut.original_vertex[c]);
-        CheckerboardPicture picture;
+        CheckerboardPicture checkerboard;
         char title[256];
         std::snprintf(title, sizeof title, "%s: %ld faces, %zu singularities, %ld foldovers%s",
                       std::filesystem::path(a.mesh).filename().c_str(), long(mesh.num_simplices()),
                       r.singularities_after.size(), long(r.result.quality.inverted),
                       r.success ? "" : " (FAILED)");
-        picture.title = title;
-        plan.write(png, [&](const std::string& path) {
+        checkerboard.title = title;
+        picture.draw(plan, [&](const std::string& path) {
             write_checkerboard_png(path, cut_positions, cut.mesh.simplices, r.result.map.uv,
-                                   picture);
+                                   checkerboard);
         });
     }
     const double output_time = stage.lap();
@@ -332,8 +330,9 @@ int run_seamless_command(const SeamlessArguments& a) {
                   r.result.quality.conformal.mean, total.seconds(), read_time, r.times.field,
                   r.times.integrable, r.times.poisson, output_time, peak_memory_gb());
     std::cout << line << "  " << r.message << "\n  wrote " << a.out
-              << (vtu.empty() ? "" : ", " + vtu) << (png.empty() ? "" : ", " + png)
+              << (vtu.empty() ? "" : ", " + vtu) << picture.wrote()
               << (a.report.empty() ? "" : ", " + a.report) << "\n";
+    picture.warn(std::cerr);
     return r.success ? kExitVerified : kExitNotVerified;
 }
 

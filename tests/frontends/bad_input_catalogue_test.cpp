@@ -830,7 +830,7 @@ std::vector<Case> catalogue() {
          "param --mesh {D}/bump.obj --out {D}/uv.obj --quiet",
          0,
          {"2 triangles, 4 vertices"},
-         {"uv.obj"}},
+         {"uv.obj", "uv.png"}},
         {"OffWithByteOrderMark",
          [](const Inputs& in) {
              bump_off(in);
@@ -839,7 +839,7 @@ std::vector<Case> catalogue() {
          "param --mesh {D}/b.off --out {D}/uv.obj --quiet",
          0,
          {"success: verified"},
-         {"uv.obj"}},
+         {"uv.obj", "uv.png"}},
         {"HandlesOnTheFirstLine",
          [](const Inputs& in) {
              in.text("p.txt", grid_problem(6, {0, 5, 30, 35}));
@@ -871,13 +871,13 @@ std::vector<Case> catalogue() {
          "param --mesh {D}/b.off --out {D}/uv.obj --quiet",
          0,
          {"success: verified"},
-         {"uv.obj"}},
+         {"uv.obj", "uv.png"}},
         {"SurfaceAt1eMinus200",
          [](const Inputs& in) { in.mesh("b.off", bump(1e-200)); },
          "param --mesh {D}/b.off --out {D}/uv.obj --quiet",
          0,
          {"success: verified"},
-         {"uv.obj"}},
+         {"uv.obj", "uv.png"}},
     };
     // A corner moved far from a 3 x 3 grid whose boundary is fixed: the initial map is
     // inversion-free, so the problem is solvable. (Beyond about 1e14 the verification calls the
@@ -922,7 +922,7 @@ std::vector<Case> catalogue() {
                      "{D}/r.json --quiet",
                      0,
                      {"ARAP start:", "success: verified"},
-                     {"o.vtu", "r.json"}});
+                     {"o.vtu", "o.png", "r.json"}});
     cases.push_back({"DeformHandleOutOfRange",
                      [&](const Inputs& in) {
                          lifted_box(in);

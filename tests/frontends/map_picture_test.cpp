@@ -9,11 +9,15 @@
 #include <vtkPNGReader.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <vector>
 
 #include "frontends/output/layout_picture.h"
+#include "geometry/io/mesh_file.h"
 #include "geometry/mesh_generators.h"
 #include "geometry/mesh_topology.h"
 #include "optim/errors.h"
@@ -272,6 +276,69 @@ TEST_F(SaMapPicture, ThreeDimensionalPictureOrOneLineWhy) {
     const std::string err = text("err.txt");
     EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
     EXPECT_NE(err.find("no picture " + folder_.path("d.png")), std::string::npos) << err;
+}
+
+// `sa param`, `sa deform` and `sa polycube` as `sa map`: a picture beside --out by default, where
+// --png says, none with --no-png, a name that is not a PNG refused before anything is written.
+TEST_F(SaMapPicture, EveryCommandDrawsItsPictureByDefault) {
+    const SimplicialMesh square = grid_triangles(8, 8);
+    Eigen::MatrixXd bump(square.num_vertices(), 3);
+    for (Index v = 0; v < square.num_vertices(); ++v) {
+        const double x = square.vertices(v, 0), y = square.vertices(v, 1);
+        bump.row(v) << x, y, 0.2 * std::sin(4.0 * x) * y;
+    }
+    write_mesh_file(folder_.path("bump.off"), bump, square.simplices);
+    const SimplicialMesh box = grid_tetrahedra(2, 2, 2);
+    write_mesh_file(folder_.path("box.mesh"), box.vertices, box.simplices);
+    std::ofstream targets(folder_.path("t.txt"));  // the x = 1 face lifted, the x = 0 face fixed
+    for (Index v = 0; v < box.num_vertices(); ++v) {
+        const double x = box.vertices(v, 0);
+        if (x > 0.0 && x < 1.0) continue;
+        targets << v << ' ' << x << ' ' << box.vertices(v, 1) + (x > 0.5 ? 0.2 : 0.0) << ' '
+                << box.vertices(v, 2) << '\n';
+    }
+    targets.close();
+    const char* display = std::getenv("DISPLAY");
+    const bool renders = (display && *display) || xvfb_on_path();
+    struct Command {
+        std::string arguments, out;  // `out` without its extension
+        bool needs_x;
+    };
+    const std::vector<Command> commands = {
+        {"param --mesh " + folder_.path("bump.off") + " --out ", "uv", false},
+        {"deform --rest " + folder_.path("box.mesh") + " --targets " + folder_.path("t.txt") +
+             " --out ",
+         "pose", true},
+        {"polycube --mesh " + folder_.path("box.mesh") + " --out ", "cube", true}};
+    const std::map<std::string, std::string> extension = {
+        {"uv", ".obj"}, {"pose", ".vtu"}, {"cube", ".mesh"}};
+    for (const Command& c : commands) {
+        const std::string ext = extension.at(c.out);
+        const std::string out = folder_.path(c.out + ext), png = folder_.path(c.out + ".png");
+        ASSERT_EQ(sa(c.arguments + out + " --quiet"), 0) << c.arguments << text("err.txt");
+        EXPECT_TRUE(fs::exists(out)) << out;
+        if (!c.needs_x || renders) {
+            EXPECT_GT(fs::file_size(png), 1000u) << png;
+            EXPECT_NE(text("out.txt").find(", " + png + " ("), std::string::npos)
+                << text("out.txt");
+        }
+        const std::string other = folder_.path(c.out + "-2" + ext);
+        ASSERT_EQ(sa(c.arguments + other + " --png " + folder_.path(c.out + "-elsewhere.png") +
+                     " --quiet"),
+                  0)
+            << text("err.txt");
+        EXPECT_FALSE(fs::exists(folder_.path(c.out + "-2.png")));
+        if (!c.needs_x || renders) EXPECT_TRUE(fs::exists(folder_.path(c.out + "-elsewhere.png")));
+        const std::string plain = folder_.path(c.out + "-3" + ext);
+        ASSERT_EQ(sa(c.arguments + plain + " --no-png --quiet"), 0) << text("err.txt");
+        EXPECT_TRUE(fs::exists(plain));
+        EXPECT_FALSE(fs::exists(folder_.path(c.out + "-3.png")));
+        const std::string refused = folder_.path(c.out + "-4" + ext);
+        EXPECT_EQ(sa(c.arguments + refused + " --png " + folder_.path(c.out + "-4.jpg")), 2);
+        EXPECT_EQ(text("err.txt"), "sa: error: --png " + folder_.path(c.out + "-4.jpg") +
+                                       ": expected a .png file\n");
+        EXPECT_FALSE(fs::exists(refused));
+    }
 }
 
 }  // namespace
