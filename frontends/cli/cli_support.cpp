@@ -9,6 +9,7 @@
 #include <iostream>
 #include <set>
 
+#include "frontends/cli/out_of_memory.h"
 #include "geometry/io/mesh_file.h"
 #include "geometry/io/problem_io.h"
 #include "optim/errors.h"
@@ -78,6 +79,18 @@ void require_simplices(const SimplicialMesh& mesh, const std::string& path) {
     if (mesh.num_vertices() == 0) throw InputError(path + ": the mesh has no vertices");
     if (mesh.num_simplices() == 0)
         throw InputError(path + ": the mesh has no triangles or tetrahedra");
+}
+
+MeshFile read_input_mesh(const std::string& option, const std::string& path,
+                         const std::string& triangles_for) {
+    set_activity("reading " + option + " " + path);
+    MeshFile file = read_mesh_file(path);
+    for (const std::string& warning : file.warnings)
+        std::cerr << "sa: warning: " << one_line(warning) << '\n';
+    require_simplices(file.mesh, path);
+    if (!triangles_for.empty() && file.mesh.simplex_dimension() != 2)
+        throw InputError(path + ": " + triangles_for + " needs a triangle mesh");
+    return file;
 }
 
 std::string one_line(const std::string& text) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/io/mesh_file.h"
 #include "geometry/simplicial_mesh.h"
 #include "optim/errors.h"
 #include "optim/logger.h"
@@ -51,6 +52,13 @@ auto parse_option(const std::string& option, const std::string& value, Parse&& p
 /// Throws InputError `PATH: the mesh has no vertices` (or no simplices), naming the file the mesh
 /// was read from, so that later checks (handles, fields) do not blame another file.
 void require_simplices(const SimplicialMesh& mesh, const std::string& path);
+
+/// The mesh file `path` given as `option`, read (the activity "reading OPTION PATH"), each of its
+/// reader's warnings written on stderr as `sa: warning: ...` (one line each), and checked by
+/// require_simplices(). With `triangles_for` not empty, a mesh of tetrahedra is refused:
+/// InputError `PATH: TRIANGLES_FOR needs a triangle mesh`.
+MeshFile read_input_mesh(const std::string& option, const std::string& path,
+                         const std::string& triangles_for = "");
 
 /// `text` on one line, printable: line breaks become "; ", other control characters and bytes
 /// that are not UTF-8 become `\xNN`.

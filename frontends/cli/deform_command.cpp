@@ -142,22 +142,16 @@ CLI::App* add_deform_command(CLI::App& app, DeformArguments& a) {
         ->capture_default_str();
     deform->add_option("--out", a.out, "the posed mesh: .vtu .vtk .mesh .node (.obj .off in 2D)")
         ->required();
-    deform->add_option("--png", a.png,
-                       "a picture of the pose: the surface coloured by isometric distortion, "
-                       "inverted simplices in red (default: --out with .png)");
-    deform->add_flag("--no-png", a.no_png, "do not draw the picture");
+    add_picture_options(
+        *deform, a.png, a.no_png,
+        "a picture of the pose: the surface coloured by isometric distortion, inverted simplices "
+        "in red");
     deform->add_option("--report", a.report, "JSON report");
-    deform
-        ->add_option("--max-time", a.max_time,
-                     "wall-clock limit in seconds on the whole solve (the ARAP start and Simplex "
-                     "Assembly take what is left); the pose reached by then is verified, written "
-                     "and reported as it is")
-        ->check(number_or_inf_at_least(0.0, true))
-        ->capture_default_str();
-    deform->add_option("--threads", a.threads, "worker threads, 0 = all cores")
-        ->capture_default_str();
-    deform->add_flag("--force", a.force, "overwrite existing output files");
-    deform->add_flag("--quiet", a.quiet, "no progress rows on stderr");
+    add_max_time_option(*deform, a.max_time,
+                        "the whole solve (the ARAP start and Simplex Assembly take what is left)",
+                        "pose");
+    add_threads_option(*deform, a.threads);
+    add_force_and_quiet(*deform, a.force, a.quiet);
     return deform;
 }
 

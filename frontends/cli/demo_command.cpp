@@ -29,15 +29,12 @@ CLI::App* add_demo_command(CLI::App& app, DemoArguments& a) {
     demo->add_option("--size", a.size, "grid cells per side")
         ->check(CLI::Range(4, 400))
         ->capture_default_str();
-    demo->add_option("--threads", a.threads, "worker threads, 0 = all cores")
-        ->check(integer_at_least(0))
-        ->capture_default_str();
+    add_threads_option(*demo, a.threads);
     demo->add_option("--initialization", a.initialization,
                      "the disassembly's projection (as in sa map): similarity (default), "
                      "rotation, identity, random or bounded:K (the paper's Figure 6)");
     demo->add_flag("--no-png", a.no_png, "do not draw the pictures");
-    demo->add_flag("--force", a.force, "overwrite existing files in the folder");
-    demo->add_flag("--quiet", a.quiet, "no progress rows on stderr");
+    add_force_and_quiet(*demo, a.force, a.quiet, "overwrite existing files in the folder");
     return demo;
 }
 

@@ -79,26 +79,17 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
     map->add_option("--seed", a.seed, "seed of --initialization random")
         ->check(integer_at_least(0))
         ->capture_default_str();
-    map->add_option("--max-iterations", a.max_iterations, "Newton iterations at most")
-        ->check(integer_at_least(1))
-        ->capture_default_str();
-    map->add_option("--max-time", a.max_time,
-                    "wall-clock limit in seconds on the solve (checked after each iteration); the "
-                    "map reached by then is verified, written and reported as it is")
-        ->check(number_or_inf_at_least(0.0, true))
-        ->capture_default_str();
-    map->add_option("--threads", a.threads, "worker threads, 0 = all cores")
-        ->check(integer_at_least(0))
-        ->capture_default_str();
+    add_max_iterations_option(*map, a.max_iterations, "Newton iterations at most");
+    add_max_time_option(*map, a.max_time, "the solve (checked after each iteration)");
+    add_threads_option(*map, a.threads);
     map->add_option(
            "--out", a.out,
            "output map: .vtu .vtk .obj .off .mesh .node; other names get result records (resV)")
         ->required();
-    map->add_option("--png", a.png,
-                    "a picture of the map (default: --out with .png): 2D, the initial map and the "
-                    "result side by side coloured by conformal distortion; 3D, the result's "
-                    "surface coloured by isometric distortion; inverted simplices in red");
-    map->add_flag("--no-png", a.no_png, "do not draw the picture");
+    add_picture_options(*map, a.png, a.no_png,
+                        "a picture of the map: 2D, the initial map and the result side by side "
+                        "coloured by conformal distortion; 3D, the result's surface coloured by "
+                        "isometric distortion; inverted simplices in red");
     map->add_option("--report", a.report, "JSON report: options, iterations, times, verification");
     map->add_option("--record", a.record,
                     "folder for a ParaView time series of the assembly (assembly.pvd)");
@@ -136,8 +127,7 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
     map->add_flag(
         "--until-valid", a.until_valid,
         "stop at the first map verified inversion-free (untangling only: no distortion stage)");
-    map->add_flag("--force", a.force, "overwrite existing output files");
-    map->add_flag("--quiet", a.quiet, "no progress rows on stderr");
+    add_force_and_quiet(*map, a.force, a.quiet);
     return map;
 }
 
@@ -200,11 +190,7 @@ int run_map_command(const MapArguments& a) {
     plan.check();
     reserve_blas_buffer();
 
-    set_activity("reading --rest " + a.rest);
-    MeshFile rest = read_mesh_file(a.rest);
-    for (const std::string& warning : rest.warnings)
-        std::cerr << "sa: warning: " << one_line(warning) << '\n';
-    require_simplices(rest.mesh, a.rest);
+    MeshFile rest = read_input_mesh("--rest", a.rest);
     MappingProblem problem;
     problem.source = a.rest;
     problem.mesh = std::move(rest.mesh);

@@ -65,4 +65,39 @@ CLI::Validator integer_at_least(long long low) {
         rule);
 }
 
+void add_threads_option(CLI::App& command, int& threads) {
+    command.add_option("--threads", threads, "worker threads, 0 = all cores")
+        ->check(integer_at_least(0))
+        ->capture_default_str();
+}
+
+void add_max_iterations_option(CLI::App& command, int& max_iterations,
+                               const std::string& description) {
+    command.add_option("--max-iterations", max_iterations, description)
+        ->check(integer_at_least(1))
+        ->capture_default_str();
+}
+
+void add_max_time_option(CLI::App& command, double& max_time, const std::string& scope,
+                         const std::string& result) {
+    command
+        .add_option("--max-time", max_time,
+                    "wall-clock limit in seconds on " + scope + "; the " + result +
+                        " reached by then is verified, written and reported as it is")
+        ->check(number_or_inf_at_least(0.0, true))
+        ->capture_default_str();
+}
+
+void add_picture_options(CLI::App& command, std::string& png, bool& no_png,
+                         const std::string& what) {
+    command.add_option("--png", png, what + " (default: --out with .png)");
+    command.add_flag("--no-png", no_png, "do not draw the picture");
+}
+
+void add_force_and_quiet(CLI::App& command, bool& force, bool& quiet,
+                         const std::string& force_description) {
+    command.add_flag("--force", force, force_description);
+    command.add_flag("--quiet", quiet, "no progress rows on stderr");
+}
+
 }  // namespace sa::cli

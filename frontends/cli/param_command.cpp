@@ -77,31 +77,21 @@ CLI::App* add_param_command(CLI::App& app, ParamArguments& a) {
                     "keep the requested start's result even when it does not verify (no restart "
                     "from a Tutte map)");
     param->add_option("--mode", a.mode, "auto, full or submesh")->capture_default_str();
-    param->add_option("--threads", a.threads, "worker threads, 0 = all cores")
-        ->check(integer_at_least(0))
-        ->capture_default_str();
-    param->add_option("--max-iterations", a.max_iterations, "Newton iterations at most, per stage")
-        ->check(integer_at_least(1))
-        ->capture_default_str();
-    param
-        ->add_option("--max-time", a.max_time,
-                     "wall-clock limit in seconds on the whole solve (every stage, fallback and "
-                     "bound round takes what is left); the map reached by then is verified, "
-                     "written and reported as it is")
-        ->check(number_or_inf_at_least(0.0, true))
-        ->capture_default_str();
+    add_threads_option(*param, a.threads);
+    add_max_iterations_option(*param, a.max_iterations, "Newton iterations at most, per stage");
+    add_max_time_option(
+        *param, a.max_time,
+        "the whole solve (every stage, fallback and bound round takes what is left)");
     param
         ->add_option("--out", a.out,
                      "the surface with its map: .obj (vt per vertex) or .vtu/.vtk (point data uv)")
         ->required();
     param->add_option("--layout", a.layout, "the UV layout as .vtu/.vtk, with per-face distortion");
-    param->add_option("--png", a.png,
-                      "a picture of the UV layout coloured by conformal distortion, inverted "
-                      "triangles in red (default: --out with .png)");
-    param->add_flag("--no-png", a.no_png, "do not draw the picture");
+    add_picture_options(
+        *param, a.png, a.no_png,
+        "a picture of the UV layout coloured by conformal distortion, inverted triangles in red");
     param->add_option("--report", a.report, "JSON report");
-    param->add_flag("--force", a.force, "overwrite existing output files");
-    param->add_flag("--quiet", a.quiet, "no progress rows on stderr");
+    add_force_and_quiet(*param, a.force, a.quiet);
     return param;
 }
 
@@ -156,14 +146,8 @@ int run_param_command(const ParamArguments& a) {
     reserve_blas_buffer();
 
     Stopwatch stage;
-    set_activity("reading --mesh " + a.mesh);
-    MeshFile file = read_mesh_file(a.mesh);
-    for (const std::string& warning : file.warnings)
-        std::cerr << "sa: warning: " << one_line(warning) << '\n';
+    const MeshFile file = read_input_mesh("--mesh", a.mesh, "a parameterization");
     const SimplicialMesh& mesh = file.mesh;
-    require_simplices(mesh, a.mesh);
-    if (mesh.simplex_dimension() != 2)
-        throw InputError(a.mesh + ": a parameterization needs a triangle mesh");
     const double read_time = stage.lap();
     Eigen::MatrixXd given;
     if (!named) {
@@ -349,11 +333,7 @@ int run_subdivide_command(const SubdivideArguments& a) {
     plan.file("--out", a.out);
     plan.check();
     check_output_format(a.out, 2);
-    set_activity("reading --mesh " + a.mesh);
-    const MeshFile file = read_mesh_file(a.mesh);
-    require_simplices(file.mesh, a.mesh);
-    if (file.mesh.simplex_dimension() != 2)
-        throw InputError(a.mesh + ": Loop subdivision needs a triangle mesh, not tetrahedra");
+    const MeshFile file = read_input_mesh("--mesh", a.mesh, "Loop subdivision");
     validate_mesh(file.mesh, a.mesh);
     set_activity("subdividing " + a.mesh + " " + std::to_string(a.levels) + " times");
     const SimplicialMesh out = loop_subdivide(file.mesh, a.levels);

@@ -59,21 +59,12 @@ CLI::App* add_polycube_command(CLI::App& app, PolycubeArguments& a) {
                      "the mapped mesh (.mesh); OUT.rest.mesh and OUT.flags are written beside it")
         ->required();
     polycube->add_option("--vtu", a.vtu, "the map with per-tet distortion and facet labels");
-    polycube->add_option("--png", a.png,
-                         "a picture of the PolyCube coloured by conformal distortion (default: "
-                         "--out with .png)");
-    polycube->add_flag("--no-png", a.no_png, "do not draw the picture");
+    add_picture_options(*polycube, a.png, a.no_png,
+                        "a picture of the PolyCube coloured by conformal distortion");
     polycube->add_option("--report", a.report, "JSON report");
-    polycube
-        ->add_option("--max-time", a.max_time,
-                     "wall-clock limit in seconds on the solve (every bound round takes what is "
-                     "left); the map reached by then is verified, written and reported as it is")
-        ->check(number_or_inf_at_least(0.0, true))
-        ->capture_default_str();
-    polycube->add_option("--threads", a.threads, "worker threads, 0 = all cores")
-        ->capture_default_str();
-    polycube->add_flag("--force", a.force, "overwrite existing output files");
-    polycube->add_flag("--quiet", a.quiet, "no progress rows on stderr");
+    add_max_time_option(*polycube, a.max_time, "the solve (every bound round takes what is left)");
+    add_threads_option(*polycube, a.threads);
+    add_force_and_quiet(*polycube, a.force, a.quiet);
     return polycube;
 }
 

@@ -95,31 +95,21 @@ CLI::App* add_seamless_command(CLI::App& app, SeamlessArguments& a) {
     cmd->add_option("--mu", a.mu, "weight of E_m = |phi' - phi|^2")
         ->check(number_at_least(0.0))
         ->capture_default_str();
-    cmd->add_option("--threads", a.threads, "worker threads, 0 = all cores")
-        ->check(integer_at_least(0))
-        ->capture_default_str();
-    cmd->add_option("--max-iterations", a.max_iterations, "Newton iterations at most")
-        ->check(integer_at_least(1))
-        ->capture_default_str();
-    cmd->add_option("--max-time", a.max_time,
-                    "wall-clock limit in seconds on the whole run (the field's assembly and its "
-                    "local repairs take what is left); the map reached by then is verified, "
-                    "written and reported as it is")
-        ->check(number_or_inf_at_least(0.0, true))
-        ->capture_default_str();
+    add_threads_option(*cmd, a.threads);
+    add_max_iterations_option(*cmd, a.max_iterations, "Newton iterations at most");
+    add_max_time_option(
+        *cmd, a.max_time,
+        "the whole run (the field's assembly and its local repairs take what is left)");
     cmd->add_option("--out", a.out, "the surface with per-corner texture coordinates (.obj)")
         ->required();
     cmd->add_option("--vtu", a.vtu,
                     "the cut surface for ParaView: uv, fields, curls, distortion (default: --out "
                     "with .vtu)");
-    cmd->add_option("--png", a.png,
-                    "the surface textured with a checkerboard of (u, v), rendered with VTK "
-                    "(default: --out with .png)");
     cmd->add_flag("--no-vtu", a.no_vtu, "do not write the .vtu");
-    cmd->add_flag("--no-png", a.no_png, "do not render the picture");
+    add_picture_options(*cmd, a.png, a.no_png,
+                        "the surface textured with a checkerboard of (u, v), rendered with VTK");
     cmd->add_option("--report", a.report, "JSON report");
-    cmd->add_flag("--force", a.force, "overwrite existing output files");
-    cmd->add_flag("--quiet", a.quiet, "no progress rows on stderr");
+    add_force_and_quiet(*cmd, a.force, a.quiet);
     return cmd;
 }
 
@@ -152,14 +142,8 @@ int run_seamless_command(const SeamlessArguments& a) {
         throw InvalidArgumentError("--max-time " + std::to_string(a.max_time) + ": expected > 0");
     options.integrable.max_time_seconds = a.max_time;
 
-    set_activity("reading --mesh " + a.mesh);
-    MeshFile file = read_mesh_file(a.mesh);
-    for (const std::string& warning : file.warnings)
-        std::cerr << "sa: warning: " << one_line(warning) << '\n';
+    const MeshFile file = read_input_mesh("--mesh", a.mesh, "seamless parameterization");
     const SimplicialMesh& mesh = file.mesh;
-    require_simplices(mesh, a.mesh);
-    if (mesh.simplex_dimension() != 2)
-        throw InputError(a.mesh + ": seamless parameterization needs a triangle mesh");
     // The checks the pipeline makes, here with the file's name: a valid, manifold and
     // consistently oriented surface.
     validate_mesh(mesh, a.mesh);

@@ -133,18 +133,6 @@ Eigen::MatrixXd welded_normals(const Eigen::MatrixXd& points, const Eigen::Matri
 
 vtkSmartPointer<vtkPolyData> make_surface(const Eigen::MatrixXd& points,
                                           const Eigen::MatrixXi& faces, const Eigen::MatrixXd& uv) {
-    vtkNew<vtkPoints> vtk_points;
-    vtk_points->SetDataTypeToDouble();
-    vtk_points->SetNumberOfPoints(points.rows());
-    for (Eigen::Index v = 0; v < points.rows(); ++v) {
-        vtk_points->SetPoint(v, points(v, 0), points(v, 1), points(v, 2));
-    }
-    vtkNew<vtkCellArray> triangles;
-    triangles->AllocateExact(faces.rows(), 3 * faces.rows());
-    for (Eigen::Index f = 0; f < faces.rows(); ++f) {
-        const vtkIdType ids[3] = {faces(f, 0), faces(f, 1), faces(f, 2)};
-        triangles->InsertNextCell(3, ids);
-    }
     // The texture holds 2 x 2 squares, so texture coordinates are uv / 2. They are shifted by
     // an even number of squares first, keeping the pattern, so that large uv keep their
     // precision in single precision on the GPU.
@@ -167,9 +155,7 @@ vtkSmartPointer<vtkPolyData> make_surface(const Eigen::MatrixXd& points,
             vtk_normals->SetTypedComponent(v, c, static_cast<float>(normals(v, c)));
         }
     }
-    auto surface = vtkSmartPointer<vtkPolyData>::New();
-    surface->SetPoints(vtk_points);
-    surface->SetPolys(triangles);
+    vtkSmartPointer<vtkPolyData> surface = triangle_surface(points, faces);
     surface->GetPointData()->SetTCoords(tcoords);
     surface->GetPointData()->SetNormals(vtk_normals);
     return surface;

@@ -73,20 +73,10 @@ void write_surface_value_png_impl(const std::string& path, const Eigen::MatrixXd
                                   const SurfaceValuePicture& picture,
                                   const std::vector<unsigned char>& flagged) {
     check_input(positions, faces, values, picture, flagged);
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(positions.rows());
-    for (Eigen::Index v = 0; v < positions.rows(); ++v) {
-        points->SetPoint(v, positions(v, 0), positions(v, 1), positions(v, 2));
-    }
-    vtkNew<vtkCellArray> triangles;
-    triangles->AllocateExact(faces.rows(), 3 * faces.rows());
     vtkNew<vtkUnsignedCharArray> colours;
     colours->SetNumberOfComponents(4);  // RGBA: unflagged faces get picture.opacity
     colours->SetNumberOfTuples(faces.rows());
     for (Eigen::Index f = 0; f < faces.rows(); ++f) {
-        const vtkIdType ids[3] = {faces(f, 0), faces(f, 1), faces(f, 2)};
-        triangles->InsertNextCell(3, ids);
         std::array<double, 3> c{0.9, 0.1, 0.1};
         if (flagged.empty() || !flagged[f]) {
             const double t = std::isfinite(values[f])
@@ -101,9 +91,7 @@ void write_surface_value_png_impl(const std::string& path, const Eigen::MatrixXd
         colours->SetTypedComponent(
             f, 3, static_cast<unsigned char>(std::lround(255 * (opaque ? 1.0 : picture.opacity))));
     }
-    vtkNew<vtkPolyData> surface;
-    surface->SetPoints(points);
-    surface->SetPolys(triangles);
+    const vtkSmartPointer<vtkPolyData> surface = triangle_surface(positions, faces);
     surface->GetCellData()->SetScalars(colours);
 
     vtkNew<vtkPolyDataMapper> mapper;

@@ -1,10 +1,12 @@
 #include "frontends/output/vtk_scene.h"
 
 #include <vtkCamera.h>
+#include <vtkCellArray.h>
 #include <vtkImageData.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
+#include <vtkPoints.h>
 #include <vtkRenderWindow.h>
 #include <vtkSmartPointer.h>
 #include <vtkTextActor.h>
@@ -161,6 +163,25 @@ void render_scene_png(const std::string& path, vtkRenderer* renderer, const Eige
                          (why.empty() ? "" : " (" + why + ")"));
     }
     file.commit();
+}
+
+vtkSmartPointer<vtkPolyData> triangle_surface(const Eigen::MatrixXd& points,
+                                              const Eigen::MatrixXi& faces) {
+    vtkNew<vtkPoints> vtk_points;
+    vtk_points->SetDataTypeToDouble();
+    vtk_points->SetNumberOfPoints(points.rows());
+    for (Eigen::Index v = 0; v < points.rows(); ++v)
+        vtk_points->SetPoint(v, points(v, 0), points(v, 1), points(v, 2));
+    vtkNew<vtkCellArray> triangles;
+    triangles->AllocateExact(faces.rows(), 3 * faces.rows());
+    for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+        const vtkIdType ids[3] = {faces(f, 0), faces(f, 1), faces(f, 2)};
+        triangles->InsertNextCell(3, ids);
+    }
+    auto surface = vtkSmartPointer<vtkPolyData>::New();
+    surface->SetPoints(vtk_points);
+    surface->SetPolys(triangles);
+    return surface;
 }
 
 }  // namespace sa

@@ -10,7 +10,9 @@
 // by a process-wide lock; VTK's messages are captured and the first one is reported in the
 // exception when the picture cannot be made.
 
+#include <vtkPolyData.h>
 #include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
 
 #include <Eigen/Core>
 #include <array>
@@ -40,6 +42,11 @@ SceneView scene_view(const Picture& picture) {
     view.elevation = picture.elevation;
     return view;
 }
+
+/// A surface of `faces` (#F x 3 rows into `points`, #V x 3) as VTK points (double) and triangle
+/// cells in the order of `faces`; the caller adds its point or cell data.
+vtkSmartPointer<vtkPolyData> triangle_surface(const Eigen::MatrixXd& points,
+                                              const Eigen::MatrixXi& faces);
 
 /// `points` #V x 3: what the camera must show. Throws InputError (messages start with `who`)
 /// when there is no display or the picture cannot be rendered or written.
