@@ -244,13 +244,33 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
                           const SimplexAssemblyObserver& observer) {
     Stopwatch total;
     const TimeBudget budget(options.max_time_seconds);
+    StageTimes times;
+    std::unique_ptr<PreparedProblem<D>> prepared = prepare_problem<D>(input, options, times);
+    times.total = total.seconds();
+    return solve_prepared<D>(*prepared, with_time_left(options, budget), observer, times);
+}
+
+}  // namespace
+
+template <int D>
+SimplexAssemblyResult solve_prepared(PreparedProblem<D>& p, const SimplexAssemblyOptions& options,
+                                     const SimplexAssemblyObserver& observer,
+                                     const StageTimes& preparation) {
+    Stopwatch total;
+    const TimeBudget budget(options.max_time_seconds);
+    const MappingProblem& input = *p.input;
+    PreparedProblem<D>* prepared = &p;
     SimplexAssemblyResult result;
-    std::unique_ptr<PreparedProblem<D>> prepared = prepare_problem<D>(input, options, result.times);
+    result.times = preparation;
     result.initial_quality = prepared->initial_quality;
     result.mode = choose_mode<D>(*prepared, options);
     const SimplexAssemblyOptions solve_options = at_map_scale(options, prepared->pinned);
     if (result.mode == SolveMode::kSubmesh) {
         solve_submeshes<D>(*prepared, solve_options, budget, observer, result);
+    } else if (prepared->assembly.start_linear.empty() && prepared->mesh.num_simplices() > 0) {
+        throw InvalidArgumentError(input.source +
+                                   ": a restarted problem (restart_problem) has no disassembly: "
+                                   "the full mode needs prepare_problem");
     } else {
         solve_full<D>(*prepared, solve_options, budget, observer, result);
     }
@@ -308,11 +328,14 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
     message << ".";
     result.message = message.str();
     result.times.verification += stage.lap();
-    result.times.total = total.seconds();
+    result.times.total = preparation.total + total.seconds();
     return result;
 }
 
-}  // namespace
+template SimplexAssemblyResult solve_prepared<2>(PreparedProblem<2>&, const SimplexAssemblyOptions&,
+                                                 const SimplexAssemblyObserver&, const StageTimes&);
+template SimplexAssemblyResult solve_prepared<3>(PreparedProblem<3>&, const SimplexAssemblyOptions&,
+                                                 const SimplexAssemblyObserver&, const StageTimes&);
 
 SimplexAssemblyResult run_simplex_assembly(const MappingProblem& problem,
                                            const SimplexAssemblyOptions& options,
