@@ -5,6 +5,7 @@
 
 #include "energies/distortion.h"
 #include "frontends/simplex_assembly/prepared_problem.h"
+#include "frontends/simplex_assembly/round_verification.h"
 
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
@@ -79,6 +80,13 @@ OptimalBound run_rounds(MappingProblem problem, SimplexAssemblyOptions options,
     // submesh rounds restart it from each verified result with the new bounds (restart_problem);
     // a full-mode round prepares the problem again (it needs the disassembly of its start).
     std::unique_ptr<PreparedProblem<D>> prepared;
+    // The restarted rounds move the vertices of their regions only: each is verified where it
+    // moved (round_verification.h), and the map kept is verified whole at the end, with the
+    // bounds and start of its round.
+    VerifiedMap changes;
+    bool kept_in_part = false;
+    SimplexAssemblyOptions kept_options;
+    MappingProblem kept_problem;
     // The distortion of the identity in each bound's measure (lowered()).
     double builtin_identity = 0.0;
     if (options.builtin_energy) {
@@ -126,13 +134,16 @@ OptimalBound run_rounds(MappingProblem problem, SimplexAssemblyOptions options,
         round_options.validate();
         Stopwatch prepare_watch;
         StageTimes times;
-        if (prepared && options.mode == SolveMode::kSubmesh) {
+        const bool restarted = prepared && options.mode == SolveMode::kSubmesh;
+        if (restarted) {
             restart_problem<D>(*prepared, round_options, times);
         } else {
             prepared = prepare_problem<D>(problem, round_options, times);
+            changes = VerifiedMap{};
         }
         times.total = prepare_watch.seconds();
-        SimplexAssemblyResult r = solve_prepared<D>(*prepared, round_options, observer, times);
+        SimplexAssemblyResult r = solve_prepared<D>(*prepared, round_options, observer, times,
+                                                    restarted && D == 2 ? &changes : nullptr);
         if (round == 0) result.initial_quality = r.initial_quality;
         BoundRound record;
         record.bound = options.builtin_energy ? options.bound : kInfinity;
@@ -163,7 +174,32 @@ OptimalBound run_rounds(MappingProblem problem, SimplexAssemblyOptions options,
         }
         result.solve = std::move(r);
         result.verified = true;
+        kept_in_part = restarted && D == 2;
+        if (kept_in_part) {
+            kept_options = round_options;
+            kept_problem.initial = problem.initial;
+            kept_problem.energies = problem.energies;
+        }
         if (!improved) break;
+    }
+    if (kept_in_part) {
+        // The whole map, once, from its positions.
+        Stopwatch watch;
+        MappingProblem input = problem;
+        input.initial = std::move(kept_problem.initial);
+        input.energies = std::move(kept_problem.energies);
+        SimplexAssemblyResult& r = result.solve;
+        verify_result<D>(input, kept_options, r, &prepared->topology);
+        r.success =
+            r.success && r.verification.within_bound() && (!rounds.accept || rounds.accept(r));
+        r.times.verification += watch.seconds();
+        if (!r.success) {
+            result.verified = false;
+            r.message = "FAILED: " + r.verification.describe() +
+                        " (the whole map after its rounds, each verified where it moved)";
+        }
+        log_line(observer.logger,
+                 "optimal bound: the map kept, verified whole: " + r.verification.describe());
     }
     return result;
 }

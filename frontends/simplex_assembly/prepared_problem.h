@@ -73,13 +73,17 @@ template <int D>
 void restart_problem(PreparedProblem<D>& p, const SimplexAssemblyOptions& options,
                      StageTimes& times);
 
+struct VerifiedMap;
+
 /// What run_simplex_assembly() does after prepare_problem(): the mode (choose_mode()), the solve,
 /// the verification of the output positions and the last resort. `preparation` holds the stage
-/// times so far (its total included in the result's).
+/// times so far (its total included in the result's). With `changes` (triangles), the output is
+/// verified where it differs from the map `changes` holds (round_verification.h), and `changes`
+/// then holds it; the last resort's output is verified whole.
 template <int D>
 SimplexAssemblyResult solve_prepared(PreparedProblem<D>& p, const SimplexAssemblyOptions& options,
                                      const SimplexAssemblyObserver& observer,
-                                     const StageTimes& preparation);
+                                     const StageTimes& preparation, VerifiedMap* changes = nullptr);
 
 /// The energy of the per-simplex terms (the options' mu E_m + E_C and the problem's own; + E_theta
 /// of the boundary fans, when asked; + the plugins' energy()) of the map `positions`

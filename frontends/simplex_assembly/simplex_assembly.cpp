@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "frontends/simplex_assembly/prepared_problem.h"
+#include "frontends/simplex_assembly/round_verification.h"
 #include "frontends/simplex_assembly/submesh_assembly.h"
 #include "frontends/simplex_assembly/untangle_fallback.h"
 #include "frontends/simplex_assembly/vertex_stage.h"
@@ -255,7 +256,7 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
 template <int D>
 SimplexAssemblyResult solve_prepared(PreparedProblem<D>& p, const SimplexAssemblyOptions& options,
                                      const SimplexAssemblyObserver& observer,
-                                     const StageTimes& preparation) {
+                                     const StageTimes& preparation, VerifiedMap* changes) {
     Stopwatch total;
     const TimeBudget budget(options.max_time_seconds);
     const MappingProblem& input = *p.input;
@@ -279,7 +280,11 @@ SimplexAssemblyResult solve_prepared(PreparedProblem<D>& p, const SimplexAssembl
             result.positions.row(v) = prepared->initial_map.row(v);  // untouched
     }
     Stopwatch stage;
-    verify_result<D>(input, options, result, &prepared->topology);
+    if (changes != nullptr && D == 2) {
+        verify_changes<D>(*prepared, options, result, *changes);
+    } else {
+        verify_result<D>(input, options, result, &prepared->topology);
+    }
     // The last resort (untangle_fallback.h): no valid map, but the handles are where they belong.
     // The fallback ignores the plugins' terms (assembly_plugin.h): not for problems with them.
     if (!result.success && options.untangle_fallback && input.plugins.empty() &&
@@ -290,6 +295,7 @@ SimplexAssemblyResult solve_prepared(PreparedProblem<D>& p, const SimplexAssembl
                 result.positions.row(v) = prepared->initial_map.row(v);
         }
         verify_result<D>(input, options, result, &prepared->topology);
+        if (changes != nullptr) *changes = VerifiedMap{};  // measured whole next time
     }
     if (!prepared->assembly.fans.empty()) {
         result.boundary_violations_before =
@@ -333,9 +339,11 @@ SimplexAssemblyResult solve_prepared(PreparedProblem<D>& p, const SimplexAssembl
 }
 
 template SimplexAssemblyResult solve_prepared<2>(PreparedProblem<2>&, const SimplexAssemblyOptions&,
-                                                 const SimplexAssemblyObserver&, const StageTimes&);
+                                                 const SimplexAssemblyObserver&, const StageTimes&,
+                                                 VerifiedMap*);
 template SimplexAssemblyResult solve_prepared<3>(PreparedProblem<3>&, const SimplexAssemblyOptions&,
-                                                 const SimplexAssemblyObserver&, const StageTimes&);
+                                                 const SimplexAssemblyObserver&, const StageTimes&,
+                                                 VerifiedMap*);
 
 SimplexAssemblyResult run_simplex_assembly(const MappingProblem& problem,
                                            const SimplexAssemblyOptions& options,
