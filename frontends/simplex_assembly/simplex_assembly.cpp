@@ -248,7 +248,10 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
     StageTimes times;
     std::unique_ptr<PreparedProblem<D>> prepared = prepare_problem<D>(input, options, times);
     times.total = total.seconds();
-    return solve_prepared<D>(*prepared, with_time_left(options, budget), observer, times);
+    // What is left of the budget, overrun included (with_time_left() would grant 1 ms more).
+    SimplexAssemblyOptions rest = options;
+    rest.max_time_seconds = budget.remaining();
+    return solve_prepared<D>(*prepared, rest, observer, times);
 }
 
 }  // namespace
