@@ -58,8 +58,8 @@ CLI::App* add_param_command(CLI::App& app, ParamArguments& a) {
         ->needs("--optimal-bound");
     param
         ->add_option("--optimal-bound-tolerance", a.optimal_bound_tolerance,
-                     "--optimal-bound stops when a round lowers the largest distortion by less "
-                     "than this share of it")
+                     "--optimal-bound stops when a round lowers the largest distortion K by less "
+                     "than this share of K - 1")
         ->check(CLI::Range(0.0, 0.5))
         ->capture_default_str()
         ->needs("--optimal-bound");

@@ -14,7 +14,7 @@ struct ParamArguments {
     std::string out, layout, png, report, mode = "auto";
     double mu = 1000.0;
     int optimal_bound_rounds = 0, threads = 0, max_iterations = 200;
-    double max_time = kInfinity, optimal_bound_tolerance = 5e-4;
+    double max_time = kInfinity, optimal_bound_tolerance = 5e-3;
     bool optimal_bound = false, free_boundary_injective = false, force = false, quiet = false;
     bool no_fallback = false, no_png = false;
 };

@@ -23,7 +23,7 @@ struct DeformOptions {
     /// Find both bounds by the optimal-bound loop (then the two bounds above must be infinite).
     bool optimal_bound = false;
     int optimal_bound_rounds = 10;
-    /// The rounds stop when neither largest distortion drops by more than this share of it.
+    /// The rounds stop when neither largest distortion K drops by more than this share of K - 1.
     double optimal_bound_tolerance = 5e-4;
     /// Rounds after the first solve regions around every simplex within this share of a bound
     /// (OptimalBoundOptions::submesh_band), the rest of the pose fixed.

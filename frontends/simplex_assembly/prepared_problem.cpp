@@ -205,6 +205,74 @@ std::vector<EdgeRow<D>> edge_rows(const MappingProblem& p, const SimplicialMesh&
     return rows;
 }
 
+/// An anchor for every connected part without a handle: its least distorted non-inverted
+/// simplex in the start (its first simplex if all are inverted), by p.initial_quality.
+template <int D>
+void choose_anchors(PreparedProblem<D>& p) {
+    const MappingProblem& input = *p.input;
+    AssemblyInput<D>& in = p.assembly;
+    const Index n = p.mesh.num_simplices();
+    in.anchored_simplices.clear();
+    Index components = 0;
+    const std::vector<Index> component = p.topology.simplex_components(&components);
+    std::vector<unsigned char> has_handle(components, 0);
+    for (Index h : input.handles) {
+        has_handle[component[p.topology.simplices_of_vertex[p.topology.vertex_begin[h]]]] = 1;
+    }
+    std::vector<Index> anchor(components, -1);
+    for (Index s = 0; s < n; ++s) {
+        const Index c = component[s];
+        if (has_handle[c]) continue;
+        if (anchor[c] < 0) {
+            anchor[c] = s;
+            continue;
+        }
+        const SimplexQuality& q = p.initial_quality.per_simplex[s];
+        const SimplexQuality& best = p.initial_quality.per_simplex[anchor[c]];
+        const bool usable = !q.inverted && !q.degenerate,
+                   best_usable = !best.inverted && !best.degenerate;
+        if ((usable && !best_usable) || (usable == best_usable && q.conformal < best.conformal))
+            anchor[c] = s;
+    }
+    for (Index c = 0; c < components; ++c) {
+        if (anchor[c] >= 0) in.anchored_simplices.push_back(anchor[c]);
+    }
+}
+
+/// The options' mu E_m + E_C (with the options' bound) and the problem's own energies.
+template <int D>
+void set_energies(PreparedProblem<D>& p, const SimplexAssemblyOptions& options) {
+    AssemblyInput<D>& in = p.assembly;
+    in.energies.clear();
+    p.energy = nullptr;
+    if (options.builtin_energy) {
+        p.energy = std::make_shared<const SimplexEnergy<D>>(
+            simplex_energy_options(options), p.frames.volume,
+            options.mapping_distortion == DistortionType::kDifference ? in.reference_linear
+                                                                      : std::vector<Mat<D>>{});
+        in.energies.push_back(
+            std::make_shared<SimplexTermOf<D, SimplexEnergy<D>>>("simplex energy", p.energy));
+    }
+    for (const auto& energy : p.input->energies)
+        in.energies.push_back(std::static_pointer_cast<const SimplexTerm<D>>(energy));
+}
+
+/// Eq. 6's fixed rows: the handles at their targets, the first vertex of each anchored simplex
+/// at the image of its disassembled simplex (`disassembled`) or at its start position.
+template <int D>
+void set_pinned(PreparedProblem<D>& p, bool disassembled) {
+    const AssemblyInput<D>& in = p.assembly;
+    p.pinned = p.start;
+    for (std::size_t k = 0; k < in.handles.size(); ++k)
+        p.pinned.row(in.handles[k]) = in.targets[k].transpose();
+    if (!disassembled) return;
+    for (Index s : in.anchored_simplices) {
+        const Index v = p.mesh.simplices(s, 0);
+        p.pinned.row(v) =
+            (in.start_linear[s] * p.frames.corner(s, 0) + in.start_translation[s]).transpose();
+    }
+}
+
 }  // namespace
 
 template <int D>
@@ -275,30 +343,7 @@ std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
     for (Index k = 0; k < p->target_rows.rows(); ++k) {
         in.targets.push_back(((p->target_rows.row(k) - p->map_center) * p->scale).transpose());
     }
-    Index components = 0;
-    const std::vector<Index> component = p->topology.simplex_components(&components);
-    std::vector<unsigned char> has_handle(components, 0);
-    for (Index h : input.handles) {
-        has_handle[component[p->topology.simplices_of_vertex[p->topology.vertex_begin[h]]]] = 1;
-    }
-    std::vector<Index> anchor(components, -1);
-    for (Index s = 0; s < n; ++s) {
-        const Index c = component[s];
-        if (has_handle[c]) continue;
-        if (anchor[c] < 0) {
-            anchor[c] = s;
-            continue;
-        }
-        const SimplexQuality& q = p->initial_quality.per_simplex[s];
-        const SimplexQuality& best = p->initial_quality.per_simplex[anchor[c]];
-        const bool usable = !q.inverted && !q.degenerate,
-                   best_usable = !best.inverted && !best.degenerate;
-        if ((usable && !best_usable) || (usable == best_usable && q.conformal < best.conformal))
-            anchor[c] = s;
-    }
-    for (Index c = 0; c < components; ++c) {
-        if (anchor[c] >= 0) in.anchored_simplices.push_back(anchor[c]);
-    }
+    choose_anchors(*p);
     if (input.boundary_injective) {
         if constexpr (D != 2) {
             throw InvalidArgumentError(
@@ -308,16 +353,7 @@ std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
             open_boundary_angles(original, in.fans, p->frames, in.start_linear, input.source);
         }
     }
-    if (options.builtin_energy) {
-        p->energy = std::make_shared<const SimplexEnergy<D>>(
-            simplex_energy_options(options), p->frames.volume,
-            options.mapping_distortion == DistortionType::kDifference ? in.reference_linear
-                                                                      : std::vector<Mat<D>>{});
-        in.energies.push_back(
-            std::make_shared<SimplexTermOf<D, SimplexEnergy<D>>>("simplex energy", p->energy));
-    }
-    for (const auto& energy : input.energies)
-        in.energies.push_back(std::static_pointer_cast<const SimplexTerm<D>>(energy));
+    set_energies(*p, options);
     in.constraints = edge_rows<D>(input, p->mesh, p->topology, p->scale);
     for (const auto& plugin : input.plugins)
         in.plugins.push_back(std::static_pointer_cast<const AssemblyPlugin<D>>(plugin));
@@ -327,21 +363,46 @@ std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
     in.plugin_stage.map_center = p->map_center;
 
     // Eq. 6: handles at their targets, one vertex of each anchored simplex at its start image.
-    p->pinned = p->start;
+    set_pinned(*p, true);
     std::vector<unsigned char> fixed(p->mesh.num_vertices(), 0);
-    for (std::size_t k = 0; k < in.handles.size(); ++k) {
-        p->pinned.row(in.handles[k]) = in.targets[k].transpose();
-        fixed[in.handles[k]] = 1;
-    }
-    for (Index s : in.anchored_simplices) {
-        const Index v = p->mesh.simplices(s, 0);
-        p->pinned.row(v) =
-            (in.start_linear[s] * p->frames.corner(s, 0) + in.start_translation[s]).transpose();
-        fixed[v] = 1;
-    }
+    for (Index h : in.handles) fixed[h] = 1;
+    for (Index s : in.anchored_simplices) fixed[p->mesh.simplices(s, 0)] = 1;
     p->recovery_fixed = std::move(fixed);
     times.setup += stage.lap();
     return p;
+}
+
+template <int D>
+void restart_problem(PreparedProblem<D>& p, const SimplexAssemblyOptions& options,
+                     StageTimes& times) {
+    Stopwatch stage;
+    const MappingProblem& input = *p.input;
+    if (input.initial.rows() != p.mesh.num_vertices() || input.initial.cols() < D ||
+        !input.initial.leftCols(D).allFinite()) {
+        throw InputError(input.source + ": the restarted map has " +
+                         std::to_string(input.initial.rows()) + " rows for " +
+                         std::to_string(p.mesh.num_vertices()) +
+                         " vertices, or a non-finite coordinate");
+    }
+    p.initial_map = input.initial.leftCols(D);
+    p.start = (p.initial_map.rowwise() - p.map_center) * p.scale;
+    p.assembly.start_linear.clear();
+    p.assembly.start_translation.clear();
+    // The anchors of the parts without a handle are chosen again, as prepare_problem() would
+    // from this start (the vertex stage keeps their simplices fixed).
+    p.initial_quality = map_quality<D>(linear_parts<D>(p.mesh, p.frames, p.start), p.frames.volume);
+    const std::vector<Index> anchors = p.assembly.anchored_simplices;
+    choose_anchors(p);
+    if (anchors != p.assembly.anchored_simplices) {
+        std::vector<unsigned char> fixed(p.mesh.num_vertices(), 0);
+        for (Index h : p.assembly.handles) fixed[h] = 1;
+        for (Index s : p.assembly.anchored_simplices) fixed[p.mesh.simplices(s, 0)] = 1;
+        p.recovery_fixed = std::move(fixed);
+        p.reset_recovery();
+    }
+    set_pinned(p, false);
+    set_energies(p, options);
+    times.setup += stage.lap();
 }
 
 template <int D>
@@ -428,6 +489,8 @@ template std::unique_ptr<PreparedProblem<2>> prepare_problem<2>(const MappingPro
 template std::unique_ptr<PreparedProblem<3>> prepare_problem<3>(const MappingProblem&,
                                                                 const SimplexAssemblyOptions&,
                                                                 StageTimes&);
+template void restart_problem<2>(PreparedProblem<2>&, const SimplexAssemblyOptions&, StageTimes&);
+template void restart_problem<3>(PreparedProblem<3>&, const SimplexAssemblyOptions&, StageTimes&);
 template double mesh_energy<2>(const PreparedProblem<2>&, const Eigen::MatrixXd&);
 template double mesh_energy<3>(const PreparedProblem<3>&, const Eigen::MatrixXd&);
 template void verify_result<2>(const MappingProblem&, const SimplexAssemblyOptions&,

@@ -44,6 +44,9 @@ struct PreparedProblem {
         return *recovery_;
     }
 
+    /// Drops the Eq. 6 solver (after recovery_fixed changed).
+    void reset_recovery() { recovery_.reset(); }
+
     Eigen::MatrixXd to_original(const Eigen::MatrixXd& normalized) const {
         return (normalized / scale).rowwise() + map_center;
     }
@@ -57,6 +60,30 @@ template <int D>
 std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
                                                     const SimplexAssemblyOptions& options,
                                                     StageTimes& times);
+
+/// Restarts `p` (prepared from *p.input) from p.input->initial with the bounds of `options` and of
+/// p.input->energies, for another submesh-mode solve of the same mesh and handles (the
+/// optimal-bound rounds): what depends on the rest shape only (topology, normalization, frames,
+/// anchors, constraints, the Eq. 6 factorization) is kept; the start, its quality, the pinned rows
+/// and the energies are replaced, the anchors chosen again; the normalization keeps the first
+/// start's map centre. The
+/// disassembly (assembly.start_linear, start_translation) is dropped: the submesh mode does not use
+/// it, and a full-mode solve needs prepare_problem().
+template <int D>
+void restart_problem(PreparedProblem<D>& p, const SimplexAssemblyOptions& options,
+                     StageTimes& times);
+
+struct VerifiedMap;
+
+/// What run_simplex_assembly() does after prepare_problem(): the mode (choose_mode()), the solve,
+/// the verification of the output positions and the last resort. `preparation` holds the stage
+/// times so far (its total included in the result's). With `changes` (triangles), the output is
+/// verified where it differs from the map `changes` holds (round_verification.h), and `changes`
+/// then holds it; the last resort's output is verified whole.
+template <int D>
+SimplexAssemblyResult solve_prepared(PreparedProblem<D>& p, const SimplexAssemblyOptions& options,
+                                     const SimplexAssemblyObserver& observer,
+                                     const StageTimes& preparation, VerifiedMap* changes = nullptr);
 
 /// The energy of the per-simplex terms (the options' mu E_m + E_C and the problem's own; + E_theta
 /// of the boundary fans, when asked; + the plugins' energy()) of the map `positions`

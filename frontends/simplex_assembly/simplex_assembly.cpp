@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "frontends/simplex_assembly/prepared_problem.h"
+#include "frontends/simplex_assembly/round_verification.h"
 #include "frontends/simplex_assembly/submesh_assembly.h"
 #include "frontends/simplex_assembly/untangle_fallback.h"
 #include "frontends/simplex_assembly/vertex_stage.h"
@@ -244,13 +245,36 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
                           const SimplexAssemblyObserver& observer) {
     Stopwatch total;
     const TimeBudget budget(options.max_time_seconds);
+    StageTimes times;
+    std::unique_ptr<PreparedProblem<D>> prepared = prepare_problem<D>(input, options, times);
+    times.total = total.seconds();
+    // What is left of the budget, overrun included (with_time_left() would grant 1 ms more).
+    SimplexAssemblyOptions rest = options;
+    rest.max_time_seconds = budget.remaining();
+    return solve_prepared<D>(*prepared, rest, observer, times);
+}
+
+}  // namespace
+
+template <int D>
+SimplexAssemblyResult solve_prepared(PreparedProblem<D>& p, const SimplexAssemblyOptions& options,
+                                     const SimplexAssemblyObserver& observer,
+                                     const StageTimes& preparation, VerifiedMap* changes) {
+    Stopwatch total;
+    const TimeBudget budget(options.max_time_seconds);
+    const MappingProblem& input = *p.input;
+    PreparedProblem<D>* prepared = &p;
     SimplexAssemblyResult result;
-    std::unique_ptr<PreparedProblem<D>> prepared = prepare_problem<D>(input, options, result.times);
+    result.times = preparation;
     result.initial_quality = prepared->initial_quality;
     result.mode = choose_mode<D>(*prepared, options);
     const SimplexAssemblyOptions solve_options = at_map_scale(options, prepared->pinned);
     if (result.mode == SolveMode::kSubmesh) {
         solve_submeshes<D>(*prepared, solve_options, budget, observer, result);
+    } else if (prepared->assembly.start_linear.empty() && prepared->mesh.num_simplices() > 0) {
+        throw InvalidArgumentError(input.source +
+                                   ": a restarted problem (restart_problem) has no disassembly: "
+                                   "the full mode needs prepare_problem");
     } else {
         solve_full<D>(*prepared, solve_options, budget, observer, result);
     }
@@ -259,7 +283,11 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
             result.positions.row(v) = prepared->initial_map.row(v);  // untouched
     }
     Stopwatch stage;
-    verify_result<D>(input, options, result, &prepared->topology);
+    if (changes != nullptr && D == 2) {
+        verify_changes<D>(*prepared, options, result, *changes);
+    } else {
+        verify_result<D>(input, options, result, &prepared->topology);
+    }
     // The last resort (untangle_fallback.h): no valid map, but the handles are where they belong.
     // The fallback ignores the plugins' terms (assembly_plugin.h): not for problems with them.
     if (!result.success && options.untangle_fallback && input.plugins.empty() &&
@@ -270,6 +298,7 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
                 result.positions.row(v) = prepared->initial_map.row(v);
         }
         verify_result<D>(input, options, result, &prepared->topology);
+        if (changes != nullptr) *changes = VerifiedMap{};  // measured whole next time
     }
     if (!prepared->assembly.fans.empty()) {
         result.boundary_violations_before =
@@ -308,11 +337,16 @@ SimplexAssemblyResult run(const MappingProblem& input, const SimplexAssemblyOpti
     message << ".";
     result.message = message.str();
     result.times.verification += stage.lap();
-    result.times.total = total.seconds();
+    result.times.total = preparation.total + total.seconds();
     return result;
 }
 
-}  // namespace
+template SimplexAssemblyResult solve_prepared<2>(PreparedProblem<2>&, const SimplexAssemblyOptions&,
+                                                 const SimplexAssemblyObserver&, const StageTimes&,
+                                                 VerifiedMap*);
+template SimplexAssemblyResult solve_prepared<3>(PreparedProblem<3>&, const SimplexAssemblyOptions&,
+                                                 const SimplexAssemblyObserver&, const StageTimes&,
+                                                 VerifiedMap*);
 
 SimplexAssemblyResult run_simplex_assembly(const MappingProblem& problem,
                                            const SimplexAssemblyOptions& options,

@@ -337,14 +337,57 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
         for (Index s : p.assembly.anchored_simplices) {
             for (int k = 0; k <= D; ++k) fixed[p.mesh.simplices(s, k)] = 1;
         }
-        VertexStage vertex = run_vertex_stage<D>(
-            p.mesh, p.frames, p.assembly.energies, (positions.rowwise() - p.map_center) * p.scale,
-            fixed, with_time_left(options, budget), observer.logger,
-            VertexStageTerms<D>{{}, p.assembly.constraints});
+        // On the simplices with a free vertex only, as a mesh of their own: the same energy up
+        // to the constant of the others, set up in proportion to what the regions moved.
+        std::vector<Index> moving;
+        for (Index s = 0; s < p.mesh.num_simplices(); ++s) {
+            bool moves = false;
+            for (int k = 0; k <= D; ++k) moves |= !fixed[p.mesh.simplices(s, k)];
+            if (moves) moving.push_back(s);
+        }
+        const Submesh sub = extract_submesh(p.mesh, p.topology, moving);
+        const Index nv = static_cast<Index>(sub.vertices.size());
+        RestFrames<D> frames;
+        for (Index s : sub.simplices) {
+            frames.corners.push_back(p.frames.corners[s]);
+            frames.edge_inverse.push_back(p.frames.edge_inverse[s]);
+            frames.volume.push_back(p.frames.volume[s]);
+            if (!p.frames.axes.empty()) frames.axes.push_back(p.frames.axes[s]);
+        }
+        std::vector<std::shared_ptr<const SimplexTerm<D>>> energies;
+        for (const auto& energy : p.assembly.energies)
+            energies.push_back(energy->restricted(sub.simplices));
+        std::vector<Index> local(p.mesh.num_vertices(), -1);
+        std::vector<unsigned char> local_fixed(nv, 0);
+        Eigen::MatrixXd start(nv, D);
+        for (Index i = 0; i < nv; ++i) {
+            const Index v = sub.vertices[i];
+            local[v] = i;
+            local_fixed[i] = fixed[v];
+            start.row(i) = (positions.row(v) - p.map_center) * p.scale;
+        }
+        std::vector<EdgeRow<D>> constraints;
+        for (EdgeRow<D> c : p.assembly.constraints) {
+            // An edge with a free end lies in the submesh; one with both ends fixed is constant.
+            if (local[c.a] < 0 || local[c.b] < 0 || (fixed[c.a] && fixed[c.b])) continue;
+            c.a = local[c.a];
+            c.b = local[c.b];
+            const auto it = std::lower_bound(sub.simplices.begin(), sub.simplices.end(), c.simplex);
+            c.simplex = it != sub.simplices.end() && *it == c.simplex
+                            ? Index(it - sub.simplices.begin())
+                            : Index(-1);
+            constraints.push_back(c);
+        }
+        VertexStage vertex = run_vertex_stage<D>(sub.mesh, frames, energies, start, local_fixed,
+                                                 with_time_left(options, budget), observer.logger,
+                                                 VertexStageTerms<D>{{}, constraints});
         result.vertex_stage_ran = vertex.ran;
         result.vertex_stage_note = vertex.note;
         result.vertex_stage = vertex.newton;
-        positions = p.to_original(vertex.positions);
+        // The fixed vertices keep their positions exactly (no round trip through normalization).
+        const Eigen::MatrixXd moved = p.to_original(vertex.positions);
+        for (Index i = 0; i < nv; ++i)
+            if (!local_fixed[i]) positions.row(sub.vertices[i]) = moved.row(i);
         result.times.vertex_stage += vertex_watch.seconds();
     }
     result.positions = positions;
