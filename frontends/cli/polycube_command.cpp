@@ -232,7 +232,9 @@ int run_polycube_command(const PolycubeArguments& arguments) {
     report["command"] = "polycube";
     report["success"] = solve.success;
     report["message"] = solve.message;
-    report["start"] = {{"kind", "cube cover"}, {"quality", quality_json(solve.start_quality)}};
+    report["start"] = {{"kind", "cube cover"},
+                       {"quality", quality_json(solve.start_quality)},
+                       {"untangled_on_planes", solve.start_untangled}};
     report["bound"] = std::isfinite(plan.bound) ? nlohmann::json(plan.bound) : "inf";
     report["optimal_bound"] = plan.optimal_bound;
     report["reached_bound"] =
@@ -247,6 +249,7 @@ int run_polycube_command(const PolycubeArguments& arguments) {
                        {"vertex_stage_note", solve.solve.vertex_stage_note},
                        {"driver_message", solve.solve.message}};
     report["times"] = {{"cube_cover", solve.cube_cover_seconds},
+                       {"untangle", solve.untangle_seconds},
                        {"solve", solve.solve_seconds},
                        {"verify", solve.verify_seconds},
                        {"total", total.seconds()}};

@@ -9,6 +9,7 @@
 #include "energies/polycube_constraints.h"
 #include "frontends/polycube/boundary_angle_sums.h"
 #include "frontends/polycube/polycube_terms.h"
+#include "frontends/simplex_assembly/untangle.h"
 #include "geometry/cube_cover.h"
 #include "geometry/rest_frames.h"
 #include "optim/errors.h"
@@ -21,8 +22,9 @@ namespace {
 /// The PolyCube terms of polycube_solve.h as a plugin of the mesh driver.
 class PolycubePlugin final : public AssemblyPlugin<3> {
   public:
-    PolycubePlugin(const PreparedPolycube& prepared, double angle_weight)
-        : AssemblyPlugin<3>("polycube"), p_(prepared), weight_(angle_weight) {
+    PolycubePlugin(const PreparedPolycube& prepared, double angle_weight,
+                   const PolycubePluginOptions& options)
+        : AssemblyPlugin<3>("polycube"), p_(prepared), weight_(angle_weight), options_(options) {
         build_planes();
     }
 
@@ -64,7 +66,7 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
         for_each_solid_angle_term(p_, a_form("solid-angle sums, A-form"), none, &skipped);
     }
 
-    bool project(Eigen::MatrixXd& positions, const PluginStage<3>&) const override {
+    bool project(Eigen::MatrixXd& positions, const PluginStage<3>& stage) const override {
         std::vector<double> sum(plane_axis_.size(), 0.0);
         std::vector<Index> count(plane_axis_.size(), 0);
         for (const auto& [v, plane] : members_) {
@@ -73,7 +75,53 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
         }
         for (const auto& [v, plane] : members_)
             positions(v, plane_axis_[plane]) = sum[plane] / double(count[plane]);
-        return positions.allFinite();
+        if (!positions.allFinite()) return false;
+        // Flattening the charts onto their planes folds tetrahedra along the boundary where the
+        // assembly has not made the charts planar yet (S3: 25 of 43,224 at the first hand-over
+        // test, with every angle sum below its limit): untangle them on the planes.
+        if (stage.mesh != nullptr && stage.frames != nullptr)
+            untangle_on_planes(positions, *stage.mesh, *stage.frames, stage.fixed);
+        return true;
+    }
+
+    /// When `positions` (on the planes) has an inverted or degenerate tetrahedron: untangles
+    /// them in vertex variables (untangle.h), each plane's coordinate fixed as in the vertex stage
+    /// (and the vertices `fixed` flags, when given), and keeps the result when it is
+    /// inversion-free with every angle sum below its limit; otherwise leaves `positions`. Rest
+    /// `mesh` and `positions` in the same units (any). Returns the number of tetrahedra that were
+    /// inverted or degenerate, and sets `*untangled` when it replaced the positions.
+    Index untangle_on_planes(Eigen::MatrixXd& positions, const SimplicialMesh& mesh,
+                             const RestFrames<3>& frames, const std::vector<unsigned char>* fixed,
+                             bool* untangled = nullptr) const {
+        if (untangled != nullptr) *untangled = false;
+        const MapQuality quality =
+            map_quality<3>(linear_parts<3>(mesh, frames, positions), frames.volume);
+        const Index bad = quality.inverted + quality.degenerate;
+        const double left = options_.max_time - clock_.seconds();
+        if (bad == 0 || options_.untangle_iterations <= 0 || !(left > 0.0)) return bad;
+        UntangleOptions u;
+        // To the untangling energy's convergence, not the first valid iterate: its near-flat
+        // tetrahedra would put the conformal barrier beyond what the vertex stage can start from.
+        u.until_valid = false;
+        u.max_iterations = options_.untangle_iterations;
+        u.max_time_seconds = left;
+        u.num_threads = options_.threads;
+        u.fixed_coordinates.assign(3 * mesh.num_vertices(), 0);
+        for (const auto& [v, plane] : members_) u.fixed_coordinates[3 * v + plane_axis_[plane]] = 1;
+        const PluginStage<3> stage;
+        u.accept = [&](const Eigen::MatrixXd& x) { return std::isfinite(energy(x, stage)); };
+        std::vector<unsigned char> none(mesh.num_vertices(), 0);
+        const UntangleResult r =
+            untangle<3>(mesh, frames, positions, fixed != nullptr ? *fixed : none, u);
+        const bool kept = r.untangled && std::isfinite(energy(r.positions, stage));
+        log_line(options_.logger,
+                 "polycube: " + std::to_string(bad) +
+                     " tetrahedra inverted or degenerate on the planes; untangled on them in " +
+                     std::to_string(r.iterations) +
+                     " steps: " + (kept ? "kept" : "not kept (" + r.note + ")"));
+        if (kept) positions = r.positions;
+        if (untangled != nullptr) *untangled = kept;
+        return bad;
     }
 
     void add_vertex_terms(SimplexAssemblyEngine<3>& engine, const PluginStage<3>&) const override {
@@ -141,6 +189,9 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
 
     const PreparedPolycube& p_;
     double weight_;
+
+    PolycubePluginOptions options_;
+    Stopwatch clock_;  ///< since the plugin was made: options_.max_time counts from there
     std::vector<int> plane_axis_;                 ///< per plane: its axis
     std::vector<std::pair<Index, int>> members_;  ///< (boundary vertex, one of its planes)
 };
@@ -148,12 +199,13 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
 }  // namespace
 
 std::shared_ptr<const AssemblyPlugin<3>> polycube_plugin(const PreparedPolycube& prepared,
-                                                         double angle_weight) {
+                                                         double angle_weight,
+                                                         const PolycubePluginOptions& options) {
     if (!(angle_weight > 0.0) || !std::isfinite(angle_weight)) {
         throw InvalidArgumentError("polycube: angle_weight = " + std::to_string(angle_weight) +
                                    ": must be a finite number > 0");
     }
-    return std::make_shared<const PolycubePlugin>(prepared, angle_weight);
+    return std::make_shared<const PolycubePlugin>(prepared, angle_weight, options);
 }
 
 PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSolveOptions& options,
@@ -179,18 +231,35 @@ PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSol
                          " degenerate of " + std::to_string(prepared.mesh.num_simplices()) +
                          " tetrahedra");
 
+    PolycubePluginOptions plugin_options;
+    plugin_options.max_time = options.max_time - out.cube_cover_seconds;
+    plugin_options.threads = options.threads;
+    plugin_options.untangle_iterations = options.untangle_iterations;
+    plugin_options.logger = logger;
+    polycube_plugin(prepared, options.angle_weight, plugin_options);  // checks the options
+    const auto plugin =
+        std::make_shared<const PolycubePlugin>(prepared, options.angle_weight, plugin_options);
+
+    // A folded cube cover is untangled on its planes first: the driver's disassembly then starts
+    // from a valid map, and so does the recovered mesh of its first hand-over test, up to the
+    // few tetrahedra that the plane projection folds again.
     MappingProblem problem;
     problem.mesh = prepared.mesh;
     problem.initial = out.start;
     problem.source = "polycube";
-    problem.plugins.push_back(polycube_plugin(prepared, options.angle_weight));
+    plugin->untangle_on_planes(problem.initial, prepared.mesh, frames, nullptr,
+                               &out.start_untangled);
+    out.untangle_seconds = stage.lap();
+    problem.plugins.push_back(plugin);
     SimplexAssemblyOptions& o = out.options;
     o.distortion = DistortionType::kConformal;
     o.bound = options.bound;
-    o.max_time_seconds = options.max_time;
+    o.max_time_seconds =
+        std::max(options.max_time - out.cube_cover_seconds - out.untangle_seconds, 1e-3);
     o.num_threads = options.threads;
     o.mode = SolveMode::kFull;
     o.untangle_fallback = false;
+    o.handover_ratio = options.handover_ratio;
     SimplexAssemblyObserver observer;
     observer.logger = logger;
     if (options.optimal_bound) {

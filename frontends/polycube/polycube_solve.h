@@ -3,6 +3,8 @@
 // driver (simplex_assembly.h) and its engine, with no schedule of its own:
 //
 //   1. the cube-cover start (geometry/cube_cover.h): planar, axis-aligned charts, possibly folded;
+//      when folded, untangled in vertex variables with every plane's coordinate fixed
+//      (PolycubePluginOptions), and the driver starts from that map when it untangles;
 //   2. the driver's disassembly (closest similarity, 4.2), its assembly (r-SA, Eq. 10) and its
 //      vertex stage, minimizing the conformal barrier E_C (bound K, or none) with the PolyCube
 //      plugin (polycube_plugin()) adding, in the assembly stage,
@@ -16,6 +18,9 @@
 //      one axis that share vertices) are projected onto their mean coordinate and keep it
 //      exactly (the variable is fixed): a chart vertex slides in its plane, a vertex where two
 //      planes meet along their line, a corner of three stays. The planes fix the translation.
+//      The hand-over test projects the recovered mesh onto the planes and untangles the
+//      tetrahedra this folds (PolycubePluginOptions); by default the first valid one is handed
+//      over (handover_ratio).
 //      The angle barriers are checked on the vertex stage's start (the hand-over) and need no
 //      term there: with exact planes and no degenerate tetrahedron the angle sums cannot change
 //      (polycube_solve.cpp says why); verification measures them on the output;
@@ -43,11 +48,22 @@ struct PolycubeSolveOptions {
     int threads = 0;              ///< 0 = all cores
     /// Weight of the 3D boundary-angle barriers against E_C.
     double angle_weight = 1.0;
+    /// Most Newton steps of the untangling on the planes (PolycubePluginOptions); 0: none.
+    int untangle_iterations = 100;
+    /// The driver's hand-over test (SimplexAssemblyOptions::handover_ratio). A mesh untangled on
+    /// the planes is inversion-free but its conformal barrier is far above the disassembled
+    /// simplices' (S3: 1.7e13 against 1.2e5), so the default hands over the first valid
+    /// recovered mesh: each assembly iteration on a 30k-tetrahedron mesh costs tens of seconds
+    /// and a vertex-stage iteration under one (BENCHMARKS.md, PolyCube).
+    double handover_ratio = kInfinity;
 };
 
 struct PolycubeSolve {
-    Eigen::MatrixXd start;           ///< the cube-cover map, #V x 3
-    MapQuality start_quality;        ///< of the start
+    Eigen::MatrixXd start;     ///< the cube-cover map, #V x 3
+    MapQuality start_quality;  ///< of the start
+    /// The driver started from the start untangled on its planes (PolycubePluginOptions), not
+    /// from the start itself.
+    bool start_untangled = false;
     Eigen::MatrixXd positions;       ///< the output, #V x 3
     SimplexAssemblyResult solve;     ///< the driver's result (the kept round)
     std::vector<BoundRound> rounds;  ///< with optimal_bound (empty otherwise)
@@ -56,15 +72,30 @@ struct PolycubeSolve {
     PolycubeVerification verification;
     bool success = false;  ///< the driver's and verify_polycube()'s checks both passed
     std::string message;   ///< the outcome in a sentence or two
-    double cube_cover_seconds = 0.0, solve_seconds = 0.0, verify_seconds = 0.0;
+    double cube_cover_seconds = 0.0, untangle_seconds = 0.0, solve_seconds = 0.0,
+           verify_seconds = 0.0;
     SimplexAssemblyOptions options;  ///< what the driver was given (first round)
+};
+
+/// How the plugin's projection (the hand-over's and the vertex stage's start) finishes: after
+/// moving each plane's vertices onto their mean coordinate, the tetrahedra this folds are
+/// untangled in vertex variables (untangle.h, Garanzha et al.'s regularized barrier) with each
+/// plane's coordinate fixed, as the vertex stage keeps it, and the result is kept once it is
+/// inversion-free with every angle sum below its limit. The driver then hands over a mesh
+/// whose charts the assembly has made nearly, not exactly, planar, instead of assembling on.
+struct PolycubePluginOptions {
+    int untangle_iterations = 100;  ///< most Newton steps per projection; 0: no untangling
+    double max_time = kInfinity;    ///< seconds from the plugin's creation; none after
+    int threads = 0;                ///< 0 = all cores
+    Logger logger;                  ///< one line per untangling
 };
 
 /// The plugin of `prepared`'s PolyCube terms (see above). It refers to `prepared`, which must
 /// outlive it. `angle_weight` multiplies the angle barriers. The assembly stage takes the
 /// linear-part layout only (r-SA, f-SA).
 std::shared_ptr<const AssemblyPlugin<3>> polycube_plugin(const PreparedPolycube& prepared,
-                                                         double angle_weight = 1.0);
+                                                         double angle_weight = 1.0,
+                                                         const PolycubePluginOptions& options = {});
 
 /// The solve described above. Progress rows go to `logger`. Bad options throw
 /// InvalidArgumentError; numerical outcomes are in the result.

@@ -164,7 +164,8 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
         const double recovered_energy = mesh_energy<D>(prepared, positions);
         const bool ok = options.until_valid
                             ? std::isfinite(recovered_energy)
-                            : recovered_energy <= options.handover_ratio * row.barrier;
+                            : std::isfinite(recovered_energy) &&
+                                  recovered_energy <= options.handover_ratio * row.barrier;
         result.times.recovery += check.seconds();
         if (!ok) return std::string();
         handover = std::move(positions);

@@ -10,6 +10,7 @@
 
 #include "energies/untangling_energy.h"
 #include "energies/vertex_copy_energies.h"
+#include "optim/errors.h"
 #include "optim/newton_solver.h"
 #include "optim/problem.h"
 
@@ -98,6 +99,16 @@ UntangleResult untangle(const SimplicialMesh& mesh, const RestFrames<D>& frames,
     for (Index v = 0; v < nv; ++v) {
         if (!fixed[v]) continue;
         for (int c = 0; c < D; ++c) problem.set_fixed(D * v + c);
+    }
+    if (!options.fixed_coordinates.empty()) {
+        if (options.fixed_coordinates.size() != static_cast<std::size_t>(D * nv)) {
+            throw InvalidArgumentError("untangle: fixed_coordinates has " +
+                                       std::to_string(options.fixed_coordinates.size()) +
+                                       " flags for " + std::to_string(D * nv) + " coordinates");
+        }
+        for (Index i = 0; i < D * nv; ++i) {
+            if (options.fixed_coordinates[i]) problem.set_fixed(i);
+        }
     }
 
     DeterminantStats stats = determinants(x);

@@ -38,6 +38,10 @@ struct UntangleOptions {
     bool until_valid = true;
     /// Receives the positions (#V x D) of an untangled iterate.
     std::function<bool(const Eigen::MatrixXd&)> accept;
+    /// Single coordinates that keep their value besides the fixed vertices: empty, or D #V flags,
+    /// coordinate c of vertex v at D v + c (a vertex sliding on a plane keeps the coordinate along
+    /// the plane's normal: PolyCube). A vertex with some coordinates fixed still moves.
+    std::vector<unsigned char> fixed_coordinates;
     double energy_tolerance = 1e-5;
     int max_iterations = 500;
     double max_time_seconds = kInfinity;

@@ -8,6 +8,8 @@
 #include <atomic>
 
 #include "../geometry/polycube_fixtures.h"
+#include "geometry/cube_cover.h"
+#include "geometry/map_quality.h"
 #include "geometry/mesh_generators.h"
 #include "geometry/rest_frames.h"
 #include "optim/errors.h"
@@ -171,6 +173,54 @@ TEST(PolycubeSolve, SolveFromTheCubeCoverIsVerifiedWithAndWithoutTheOptimalBound
     both.bound = 3.0;
     both.optimal_bound = true;
     EXPECT_THROW(solve_polycube(prepared, both), InvalidArgumentError);
+}
+
+// The plugin's projection untangles what flattening folds (PolycubePluginOptions): a valid
+// PolyCube (the cube cover of the shape) with interior vertices pushed through their neighbours
+// comes back inversion-free, every plane's coordinate where it was, and passes verify_polycube
+// (planar charts, every angle sum below its limit).
+TEST(PolycubeSolve, TheProjectionUntanglesOnThePlanes) {
+    const PreparedPolycube prepared =
+        prepared_shape(testing::bent(testing::voxel_tetrahedra(testing::l_shape(), 2), 0.15));
+    const CubeCover cover = cube_cover_map(prepared.mesh, prepared.boundary, prepared.charts);
+    ASSERT_TRUE(verify_polycube(prepared.layout(), cover.positions, prepared.input_volume).passed);
+    const RestFrames<3> frames = rest_frames<3>(prepared.mesh);
+    Eigen::MatrixXd folded = cover.positions;
+    int pushed = 0;
+    for (Index v = 0; v < prepared.mesh.num_vertices() && pushed < 3; ++v) {
+        if (prepared.boundary.on_boundary[v]) continue;
+        folded.row(v) += Eigen::RowVector3d(0.6, -0.4, 0.3);
+        ++pushed;
+    }
+    ASSERT_GT(
+        map_quality<3>(linear_parts<3>(prepared.mesh, frames, folded), frames.volume).inverted, 0);
+    PluginStage<3> stage;
+    stage.kind = PluginStage<3>::Kind::kVertex;
+    stage.mesh = &prepared.mesh;
+    stage.frames = &frames;
+    Eigen::MatrixXd projected = folded;
+    ASSERT_TRUE(polycube_plugin(prepared)->project(projected, stage));
+    const PolycubeVerification v =
+        verify_polycube(prepared.layout(), projected, prepared.input_volume);
+    EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
+    EXPECT_EQ(v.quality.inverted + v.quality.degenerate, 0);
+    EXPECT_EQ(v.edge_angle_violations + v.vertex_angle_violations, 0);
+    // Sliding: a boundary vertex on one chart keeps its coordinate along the chart's axis.
+    for (Index b = 0; b < prepared.boundary.size(); ++b) {
+        const int axis = label_axis(prepared.labels[b]);
+        for (int i = 0; i < 3; ++i) {
+            const Index u = prepared.boundary.triangles(b, i);
+            EXPECT_NEAR(projected(u, axis), folded(u, axis), 1e-12);
+        }
+    }
+    // Without untangling the projection leaves the fold for the driver to refuse.
+    PolycubePluginOptions off;
+    off.untangle_iterations = 0;
+    Eigen::MatrixXd kept = folded;
+    ASSERT_TRUE(polycube_plugin(prepared, 1.0, off)->project(kept, stage));
+    EXPECT_LE((kept - folded).cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_GT(map_quality<3>(linear_parts<3>(prepared.mesh, frames, kept), frames.volume).inverted,
+              0);
 }
 
 }  // namespace

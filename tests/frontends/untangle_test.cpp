@@ -14,6 +14,7 @@
 #include "geometry/map_quality.h"
 #include "geometry/mesh_generators.h"
 #include "geometry/rest_frames.h"
+#include "optim/errors.h"
 
 namespace sa {
 namespace {
@@ -51,6 +52,33 @@ TEST(Untangle, UntanglesAGeneratedFixedBoundaryProblem) {
         EXPECT_EQ(q.inverted + q.degenerate, 0);
         for (Index h : g.handles) EXPECT_EQ((r.positions.row(h) - g.initial.row(h)).norm(), 0.0);
     }
+}
+
+// PolyCube's sliding vertices: single coordinates fixed (fixed_coordinates), the vertex free
+// otherwise. Here the handles keep only their z: the tangle is still undone, every fixed z stays
+// exactly, and the other coordinates of the handles do move.
+TEST(Untangle, FixedCoordinatesKeepTheirValues) {
+    const GeneratedProblem g = fixed_boundary_problem(
+        grid_tetrahedra(4, 4, 10), GeneratedDeformation::kTwist, 2.0, 1.0, 1, 0.02);
+    ASSERT_GT(quality(g.rest, g.initial).inverted, 100);
+    const RestFrames<3> frames = rest_frames<3>(g.rest);
+    std::vector<unsigned char> fixed(g.rest.num_vertices(), 0);
+    fixed[g.handles.front()] = 1;  // one whole vertex, and the z of every handle
+    UntangleOptions options;
+    options.fixed_coordinates.assign(3 * g.rest.num_vertices(), 0);
+    for (Index h : g.handles) options.fixed_coordinates[3 * h + 2] = 1;
+    const UntangleResult r = untangle<3>(g.rest, frames, g.initial, fixed, options);
+    EXPECT_TRUE(r.untangled) << r.note;
+    const MapQuality q = quality(g.rest, r.positions);
+    EXPECT_EQ(q.inverted + q.degenerate, 0);
+    double moved = 0.0;
+    for (Index h : g.handles) {
+        EXPECT_EQ(r.positions(h, 2), g.initial(h, 2));
+        moved = std::max(moved, (r.positions.row(h) - g.initial.row(h)).norm());
+    }
+    EXPECT_GT(moved, 0.0);
+    options.fixed_coordinates.pop_back();
+    EXPECT_THROW(untangle<3>(g.rest, frames, g.initial, fixed, options), InvalidArgumentError);
 }
 
 TEST(Untangle, AnUntangledStartIsReturnedAsItIs) {
