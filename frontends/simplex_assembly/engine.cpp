@@ -399,8 +399,10 @@ AssemblyRun SimplexAssemblyEngine<D>::run(const AssemblyEngineOptions& options,
     if (schedule) {
         // The schedule decides convergence (below); Newton's tests would stop it at any lambda.
         newton.decrement_tolerance = newton.function_tolerance = 0.0;
-    } else {
+    } else if (options.stop_when_converged) {
         newton.function_tolerance = options.energy_tolerance;
+    } else {
+        newton.decrement_tolerance = newton.function_tolerance = 0.0;
     }
     newton.projection = options.projection;
     newton.projection_epsilon = options.projection_epsilon;
@@ -416,6 +418,7 @@ AssemblyRun SimplexAssemblyEngine<D>::run(const AssemblyEngineOptions& options,
         AssemblyRecord row;
         row.iteration = c.record.iteration;
         row.energy = c.record.energy;
+        row.energy_change = c.record.iteration > 0 ? c.record.energy_change : 0.0;
         row.assembly = assembly_value;
         row.barrier = barrier_value;
         row.lambda = schedule ? lambda : 0.0;

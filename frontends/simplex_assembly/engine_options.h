@@ -15,11 +15,12 @@ namespace sa {
 /// One iteration of the assembly, as the paper's Figure 4 plots it.
 struct AssemblyRecord {
     int iteration = 0;
-    double energy = 0.0;    ///< E at the lambda of this step
-    double assembly = 0.0;  ///< E~_assembly (unweighted)
-    double barrier = 0.0;   ///< the barrier side mu E_m + E_C (+ kind-3 barriers), weighted
-    double lambda = 0.0;    ///< lambda used for this step
-    double step = -1.0;     ///< accepted step length (-1 at iteration 0)
+    double energy = 0.0;         ///< E at the lambda of this step
+    double energy_change = 0.0;  ///< E before the step minus E after, both at this step's weights
+    double assembly = 0.0;       ///< E~_assembly (unweighted)
+    double barrier = 0.0;        ///< the barrier side mu E_m + E_C (+ kind-3 barriers), weighted
+    double lambda = 0.0;         ///< lambda used for this step
+    double step = -1.0;          ///< accepted step length (-1 at iteration 0)
     int line_search_trials = -1;
     double time = 0.0;  ///< seconds since the optimization started
 };
@@ -48,10 +49,14 @@ struct AssemblyEngineOptions {
     double assembly_tolerance = 1e-12;
     /// Relative change of E within a step below which E has converged (0 = never).
     double energy_tolerance = 1e-8;
+    /// Without assembly terms: end when E stops changing or the Newton decrement vanishes. Off:
+    /// only the hook or the limits end the run (a continuation whose hook changes the energy
+    /// between steps, where those tests compare values of different energies).
+    bool stop_when_converged = true;
     int max_iterations = 200;
     double max_time_seconds = kInfinity;
-    /// Per-element Hessian projection (DESIGN.md: clamping converged in fewer iterations than
-    /// the paper's shift, kShift).
+    /// Per-element Hessian projection (clamping converged in fewer iterations than the paper's
+    /// shift, kShift: BENCHMARKS.md, "Departures from the paper, measured").
     ProjectionMode projection = ProjectionMode::kClamp;
     double projection_epsilon = 1e-8;
     /// Hessian-only shift on the translations, times lambda (the paper's 1e-6; 0 = none).

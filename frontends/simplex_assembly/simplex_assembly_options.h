@@ -63,7 +63,7 @@ struct SimplexAssemblyOptions {
 
     // Hessian modification.
     /// Per-simplex block projection; the paper shifts by -kappa + 1e-8 (kShift), eigenvalue
-    /// clamping converges in fewer iterations on our cases (DESIGN.md) and is the default.
+    /// clamping converges in fewer iterations (BENCHMARKS.md, "Departures") and is the default.
     ProjectionMode projection = ProjectionMode::kClamp;
     double projection_epsilon = 1e-8;
     /// Hessian-only diagonal shift on the translations of r-SA, times lambda (step 2 of 4.4;

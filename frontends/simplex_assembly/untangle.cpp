@@ -9,10 +9,8 @@
 #include <memory>
 
 #include "energies/untangling_energy.h"
-#include "energies/vertex_copy_energies.h"
+#include "frontends/simplex_assembly/engine.h"
 #include "optim/errors.h"
-#include "optim/newton_solver.h"
-#include "optim/problem.h"
 
 namespace sa {
 
@@ -37,32 +35,22 @@ UntangleResult untangle(const SimplicialMesh& mesh, const RestFrames<D>& frames,
     UntangleResult result;
     result.positions = start;
     const Index nv = mesh.num_vertices();
-    Eigen::VectorXd x(static_cast<Index>(D) * nv);
-    for (Index v = 0; v < nv; ++v) x.template segment<D>(D * v) = start.row(v).transpose();
 
     // The simplices with a free vertex; the others cannot change.
-    std::vector<std::array<Index, D*(D + 1)>> elements;
     std::vector<Index> moving;
-    std::vector<Mat<D>> rest_inverse;
     std::vector<double> weights;
     double total_volume = 0.0;
     for (Index s = 0; s < mesh.num_simplices(); ++s) {
         bool moves = false;
         for (int k = 0; k <= D; ++k) moves |= !fixed[mesh.simplices(s, k)];
         if (!moves) continue;
-        std::array<Index, D*(D + 1)> e;
-        for (int k = 0; k <= D; ++k) {
-            for (int c = 0; c < D; ++c) e[D * k + c] = D * mesh.simplices(s, k) + c;
-        }
-        elements.push_back(e);
         moving.push_back(s);
-        rest_inverse.push_back(frames.edge_inverse[s]);
         weights.push_back(frames.volume[s]);
         total_volume += frames.volume[s];
     }
     // Weights relative to the moving volume: the energy is a mean distortion, O(1) when untangled.
     for (double& w : weights) w /= total_volume;
-    const Index m = static_cast<Index>(elements.size());
+    const Index m = static_cast<Index>(moving.size());
 
     // det A of every moving simplex at x: the quantity eps is measured against.
     auto determinants = [&](const Eigen::VectorXd& at) {
@@ -90,16 +78,20 @@ UntangleResult untangle(const SimplicialMesh& mesh, const RestFrames<D>& frames,
             });
     };
 
+    // The engine in its vertex layout, with f_eps as the only per-simplex energy and no assembly
+    // term: projected Newton, ended by the eps rule's hook below or the limits.
+    std::vector<std::array<Index, D + 1>> simplices(mesh.num_simplices());
+    for (Index s = 0; s < mesh.num_simplices(); ++s)
+        for (int k = 0; k <= D; ++k) simplices[s][k] = mesh.simplices(s, k);
+    SimplexAssemblyEngine<D> engine = SimplexAssemblyEngine<D>::vertex_positions(
+        start.leftCols(D), std::move(simplices), frames.corners, frames.edge_inverse);
     auto parameters = std::make_shared<UntanglingParameters>();
-    Problem problem(x);
-    problem.add_term("untangling",
-                     VertexSimplexEnergy<D, UntanglingEnergy<D>>(
-                         UntanglingEnergy<D>(std::move(weights), parameters), rest_inverse),
-                     std::move(elements));
-    for (Index v = 0; v < nv; ++v) {
-        if (!fixed[v]) continue;
-        for (int c = 0; c < D; ++c) problem.set_fixed(D * v + c);
+    if (m > 0) {
+        engine.add_simplex_energy("untangling", UntanglingEnergy<D>(std::move(weights), parameters),
+                                  moving);
     }
+    for (Index v = 0; v < nv; ++v)
+        if (fixed[v]) engine.fix_vertex(v);
     if (!options.fixed_coordinates.empty()) {
         if (options.fixed_coordinates.size() != static_cast<std::size_t>(D * nv)) {
             throw InvalidArgumentError("untangle: fixed_coordinates has " +
@@ -107,19 +99,16 @@ UntangleResult untangle(const SimplicialMesh& mesh, const RestFrames<D>& frames,
                                        " flags for " + std::to_string(D * nv) + " coordinates");
         }
         for (Index i = 0; i < D * nv; ++i) {
-            if (options.fixed_coordinates[i]) problem.set_fixed(i);
+            if (options.fixed_coordinates[i]) engine.problem().set_fixed(i);
         }
     }
+    Eigen::VectorXd x = engine.problem().variables();
 
     DeterminantStats stats = determinants(x);
     result.min_det = stats.min;
     result.inverted = stats.nonpositive;
     result.untangled = stats.nonpositive == 0;
-    auto positions_of = [&](const Eigen::VectorXd& at) {
-        Eigen::MatrixXd positions(nv, D);
-        for (Index v = 0; v < nv; ++v) positions.row(v) = at.template segment<D>(D * v).transpose();
-        return positions;
-    };
+    auto positions_of = [&](const Eigen::VectorXd& at) { return engine.positions(at); };
     auto accepted = [&](const Eigen::VectorXd& at) {
         return options.until_valid && (!options.accept || options.accept(positions_of(at)));
     };
@@ -134,58 +123,61 @@ UntangleResult untangle(const SimplicialMesh& mesh, const RestFrames<D>& frames,
     if (result.untangled) best_valid = x;
     bool converged = false;
 
-    NewtonOptions newton;
-    newton.max_iterations = options.max_iterations;
-    newton.max_time_seconds = options.max_time_seconds;
-    // eps changes between steps, so the solver's own tests (at fixed weights) do not apply.
-    newton.gradient_tolerance = newton.decrement_tolerance = newton.function_tolerance = 0.0;
-    newton.projection = options.projection;
-    newton.projection_epsilon = options.projection_epsilon;
-    newton.linear_solver = options.linear_solver;
-    newton.num_threads = options.num_threads;
+    AssemblyEngineOptions run_options;
+    run_options.max_iterations = options.max_iterations;
+    run_options.max_time_seconds = options.max_time_seconds;
+    // eps changes between steps, so Newton's own tests (at fixed weights) do not apply.
+    run_options.stop_when_converged = false;
+    run_options.projection = options.projection;
+    run_options.projection_epsilon = options.projection_epsilon;
+    run_options.linear_solver = options.linear_solver;
+    run_options.num_threads = options.num_threads;
+    AssemblyHooks hooks;  // no logger: the rows below say more than the engine's
     log_line(logger, "untangle   energy    eps        min det    inverted  step      time");
-    newton.callbacks.push_back([&](const IterationContext& c) {
-        if (c.record.iteration == 0) return CallbackResult::kContinue;
-        const Eigen::VectorXd& at = c.problem.variables();
+    hooks.after_iteration = [&](const AssemblyRecord& record,
+                                const Eigen::VectorXd& at) -> std::string {
+        if (record.iteration == 0) return {};
         stats = determinants(at);
         const double eps = parameters->epsilon;
         char line[160];
         std::snprintf(line, sizeof line, "U%4d  %10.4e  %9.3e  %10.3e  %7ld  %8.2e  %6.2fs",
-                      c.record.iteration, c.record.energy, eps, stats.min, long(stats.nonpositive),
-                      c.record.step_length, c.record.cumulative_time);
+                      record.iteration, record.energy, eps, stats.min, long(stats.nonpositive),
+                      record.step, record.time);
         log_line(logger, line);
-        const double energy = c.record.energy;
-        const double before = energy + c.record.energy_change;  // at the same eps
+        const double energy = record.energy;
+        const double before = energy + record.energy_change;  // at the same eps
         if (stats.nonpositive == 0) {
             best_valid = at;
-            if (accepted(at)) return CallbackResult::kStopSuccess;
+            if (accepted(at)) return "untangled";
             if (eps <= kFinalEpsilon &&
-                c.record.energy_change <= options.energy_tolerance * std::abs(energy)) {
+                record.energy_change <= options.energy_tolerance * std::abs(energy)) {
                 converged = true;
-                return CallbackResult::kStopSuccess;
+                return "untangled, converged";
             }
         }
         // Lower eps only after a full Newton step: a damped one says that Newton is not yet in
         // its local regime for this eps (Garanzha et al. lower it after an inner solve to
         // convergence). Without this rule a faster schedule stalled (BENCHMARKS.md).
-        if (c.record.step_length < 1.0) return CallbackResult::kContinue;
+        if (record.step < 1.0) return {};
         const double sigma = std::max(1.0 - energy / before, kMinimumDecrease);
         const double mu = (1.0 - sigma) * regularized_determinant(stats.min, eps).value;
         parameters->epsilon =
             stats.min < mu ? 2.0 * std::sqrt(mu * (mu - stats.min)) : kFinalEpsilon;
-        return CallbackResult::kContinue;
-    });
-    result.newton = solve(problem, newton);
+        return {};
+    };
+    AssemblyRun run = engine.run(run_options, hooks);
+    result.newton = std::move(run.newton);
     result.iterations = result.newton.num_steps();
     result.epsilon = parameters->epsilon;
-    const Eigen::VectorXd& final_x = best_valid.size() > 0 ? best_valid : problem.variables();
+    const Eigen::VectorXd& final_x =
+        best_valid.size() > 0 ? best_valid : engine.problem().variables();
     stats = determinants(final_x);
     result.min_det = stats.min;
     result.inverted = stats.nonpositive;
     result.untangled = stats.nonpositive == 0;
     result.positions = positions_of(final_x);
     result.note = result.untangled ? (converged ? "untangled, converged" : "untangled")
-                                   : "not untangled: " + to_string(result.newton.termination);
+                                   : "not untangled: " + to_string(run.stop);
     const PhaseTimes& t = result.newton.times;
     char line[320];
     std::snprintf(line, sizeof line,

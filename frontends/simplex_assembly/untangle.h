@@ -11,6 +11,8 @@
 // then the plain distortion, infinite on inverted simplices). The minimizers for decreasing eps
 // are untangled when an untangled map exists (the paper's argument; in practice on the Locally
 // Injective Mappings benchmark's 3D problems, and here on ../shared/data/tlc/armadillo-598).
+// It is the engine (engine.h) in its vertex layout with f_eps as the only per-simplex energy and
+// no assembly term; the eps rule and the stopping test run in the engine's hook.
 //
 // Used as the start of the submesh mode when the initial map and the local/global iterations
 // leave bad simplices (submesh_start.h): the Simplex Assembly barrier E_C needs a feasible start,
