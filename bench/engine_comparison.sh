@@ -7,11 +7,11 @@ SA=$1; O=$2; D=${3:-../shared/data}; mkdir -p "$O"
 run() { name=$1; shift; timeout 300 "$SA" "$@" --force --quiet --report "$O/$name.json" > "$O/$name.out" 2>&1; echo "$name exit $?"; }
 for c in cube stgc-2d stgc-3d param2d sea-2d; do
     ext=node; case $c in stgc-2d|param2d|sea-2d) ext=obj ;; esac
-    run map-$c map --rest $D/tlc/$c/input --out $O/map-$c.$ext
-    run map-$c-uv map --rest $D/tlc/$c/input --out $O/map-$c-uv.$ext --until-valid
-    run map-$c-full map --rest $D/tlc/$c/input --out $O/map-$c-full.$ext --variant full --mode full
-    run map-$c-vsa map --rest $D/tlc/$c/input --out $O/map-$c-vsa.$ext --variant vertex --mode full
-    run map-$c-novs map --rest $D/tlc/$c/input --out $O/map-$c-novs.$ext --no-vertex-stage --mode full
+    run map-$c map --rest $D/tlc/$c/input --out $O/map-$c.$ext --no-png
+    run map-$c-uv map --rest $D/tlc/$c/input --out $O/map-$c-uv.$ext --until-valid --no-png
+    run map-$c-full map --rest $D/tlc/$c/input --out $O/map-$c-full.$ext --variant full --mode full --no-png
+    run map-$c-vsa map --rest $D/tlc/$c/input --out $O/map-$c-vsa.$ext --variant vertex --mode full --no-png
+    run map-$c-novs map --rest $D/tlc/$c/input --out $O/map-$c-novs.$ext --no-vertex-stage --mode full --no-png
 done
 run param-camel-ob param --mesh $D/param/camel_b.obj --optimal-bound --out $O/param-camel-ob.obj
 run param-camel-inj param --mesh $D/param/camel_b.obj --free-boundary-injective --out $O/param-camel-inj.obj

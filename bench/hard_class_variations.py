@@ -72,7 +72,7 @@ def main():
         out, report = path + ('.obj' if mesh == 'grid2d' else '.node'), path + '.json'
         t = time.time()
         r = subprocess.run([a.sa, 'map', '--rest', path, '--out', out, '--report', report,
-                            '--force', '--quiet', '--max-time', repr(a.timeout)],
+                            '--no-png', '--force', '--quiet', '--max-time', repr(a.timeout)],
                            capture_output=True, text=True)
         wall = time.time() - t
         try:

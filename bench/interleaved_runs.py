@@ -10,7 +10,7 @@ are recorded; the medians and quartiles are printed per variant.
   python3 bench/interleaved_runs.py --runs 60 \\
       --variant static=build/bin/sa --variant shared=build-shared/bin/sa \\
       --variant limit1=build/bin/sa,OMP_THREAD_LIMIT=1 \\
-      -- map --rest ../shared/data/tlc/param2d/input --out /tmp/p.obj --until-valid --force --quiet
+      -- map --rest ../shared/data/tlc/param2d/input --out /tmp/p.obj --until-valid --no-png --force --quiet
 """
 import argparse
 import os

@@ -32,7 +32,7 @@ def run(a, case, work, index):
                                           '.node' if case['dim'] == 3 else '.obj'))
     report = out + '.json'
     command = [a.sa, 'map'] + case['args'] + ['--mode', 'full', '--out', out, '--report', report,
-                                              '--force', '--quiet']
+                                              '--no-png', '--force', '--quiet']
     p = subprocess.run(command, capture_output=True, text=True)
     if p.returncode != 0 or not os.path.exists(report):
         return dict(case=case['name'], error='sa exit %d: %s' % (p.returncode, p.stderr.strip()[-300:]))

@@ -135,7 +135,7 @@ def run_case(a, case, variant, work):
     # sa stops itself at 90% of the timeout and reports the map it reached; the timeout only
     # catches a run that overshoots by more than its last iteration.
     command = ([a.sa, 'map'] + case['args'] + VARIANTS[variant][0] +
-               ['--out', out, '--report', report, '--force', '--quiet',
+               ['--out', out, '--report', report, '--no-png', '--force', '--quiet',
                 '--max-time', repr(0.9 * a.timeout)] + a.extra)
     print('running %s (%s) ...' % (case['name'], variant), file=sys.stderr, flush=True)
     r = run_measured(command, a.timeout)

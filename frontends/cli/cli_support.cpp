@@ -143,6 +143,10 @@ std::string extension(const std::string& path) {
     return ext;
 }
 
+std::string with_extension(const std::string& path, const std::string& ext) {
+    return std::filesystem::path(path).replace_extension(ext).string();
+}
+
 double peak_memory_gb() {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);

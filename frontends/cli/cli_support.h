@@ -59,6 +59,9 @@ std::string one_line(const std::string& text);
 /// The extension of `path` in lower case, with its dot ("" when none).
 std::string extension(const std::string& path);
 
+/// `path` with its extension replaced by `ext` (".png"), or added when it has none.
+std::string with_extension(const std::string& path, const std::string& ext);
+
 /// The process's peak resident memory so far, in GB.
 double peak_memory_gb();
 

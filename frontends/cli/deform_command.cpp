@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "frontends/cli/cli_support.h"
+#include "frontends/cli/option_checks.h"
 #include "frontends/cli/out_of_memory.h"
 #include "frontends/cli/runtime_settings.h"
 #include "frontends/deform/deform_solve.h"
@@ -145,7 +146,12 @@ CLI::App* add_deform_command(CLI::App& app, DeformArguments& a) {
                        "a picture of the pose: the surface coloured by isometric distortion, "
                        "inverted simplices in red");
     deform->add_option("--report", a.report, "JSON report");
-    deform->add_option("--max-time", a.max_time, "wall-clock limit in seconds")
+    deform
+        ->add_option("--max-time", a.max_time,
+                     "wall-clock limit in seconds on the whole solve (the ARAP start and Simplex "
+                     "Assembly take what is left); the pose reached by then is verified, written "
+                     "and reported as it is")
+        ->check(number_or_inf_at_least(0.0, true))
         ->capture_default_str();
     deform->add_option("--threads", a.threads, "worker threads, 0 = all cores")
         ->capture_default_str();

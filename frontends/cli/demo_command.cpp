@@ -10,6 +10,7 @@
 #include "frontends/cli/option_checks.h"
 #include "frontends/cli/output_plan.h"
 #include "frontends/cli/runtime_settings.h"
+#include "frontends/output/layout_picture.h"
 #include "frontends/output/map_output.h"
 #include "frontends/simplex_assembly/simplex_assembly.h"
 #include "geometry/harmonic_map.h"
@@ -23,7 +24,8 @@ namespace sa::cli {
 CLI::App* add_demo_command(CLI::App& app, DemoArguments& a) {
     CLI::App* demo = app.add_subcommand(
         "demo", "Figure 1 in miniature: a folded harmonic map of a square onto a star, repaired");
-    demo->add_option("--out-dir", a.out_dir, "folder for the .vtu files")->capture_default_str();
+    demo->add_option("--out-dir", a.out_dir, "folder for the .vtu files and their pictures (.png)")
+        ->capture_default_str();
     demo->add_option("--size", a.size, "grid cells per side")
         ->check(CLI::Range(4, 400))
         ->capture_default_str();
@@ -33,6 +35,7 @@ CLI::App* add_demo_command(CLI::App& app, DemoArguments& a) {
     demo->add_option("--initialization", a.initialization,
                      "the disassembly's projection (as in sa map): similarity (default), "
                      "rotation, identity, random or bounded:K (the paper's Figure 6)");
+    demo->add_flag("--no-png", a.no_png, "do not draw the pictures");
     demo->add_flag("--force", a.force, "overwrite existing files in the folder");
     demo->add_flag("--quiet", a.quiet, "no progress rows on stderr");
     return demo;
@@ -82,11 +85,14 @@ int run_demo_command(const DemoArguments& a) {
         (std::filesystem::path(a.out_dir) / "conformal_unbounded.vtu").string();
     const std::string bounded_path =
         (std::filesystem::path(a.out_dir) / "conformal_bound4.vtu").string();
+    const std::vector<std::string> vtus = {initial_path, unbounded_path, bounded_path};
+    std::vector<std::string> pngs;
+    if (!a.no_png)
+        for (const std::string& vtu : vtus) pngs.push_back(with_extension(vtu, ".png"));
     OutputPlan plan(a.force);
     plan.folder("--out-dir", a.out_dir);
-    plan.file("--out-dir", initial_path);
-    plan.file("--out-dir", unbounded_path);
-    plan.file("--out-dir", bounded_path);
+    for (const std::string& path : vtus) plan.file("--out-dir", path);
+    for (const std::string& path : pngs) plan.file("--out-dir", path);
     plan.check();
     reserve_blas_buffer();
     plan.open_folders();
@@ -128,6 +134,8 @@ int run_demo_command(const DemoArguments& a) {
         "|---:|---:|---:|---:|---:|---:|---:|:---|\n");
     std::fflush(stdout);
     bool all = true;
+    std::vector<MapQuality> qualities = {initial};
+    std::vector<Eigen::MatrixXd> layouts = {problem.initial};
     for (const auto& [bound, path] :
          {std::pair{kInfinity, unbounded_path}, std::pair{4.0, bounded_path}}) {
         options.bound = bound;
@@ -142,13 +150,48 @@ int run_demo_command(const DemoArguments& a) {
         std::fflush(stdout);
         if (!r.success) std::cerr << "sa demo: " << r.message << '\n';
         all = all && r.success;
+        qualities.push_back(r.final_quality);
+        layouts.push_back(r.positions);
+    }
+    // The pictures, in one colour range: the largest conformal distortion of the results.
+    std::string pictures;
+    if (!pngs.empty()) {
+        LayoutPicture picture;
+        picture.size = 800;
+        picture.value_name = "conformal distortion (sigma max / sigma min)";
+        picture.high = std::max(
+            1.1, std::min(10.0, std::max(qualities[1].conformal.max, qualities[2].conformal.max)));
+        const char* names[3] = {"harmonic initial map", "K_conf = inf", "K_conf = 4"};
+        try {
+            for (std::size_t k = 0; k < pngs.size(); ++k) {
+                const MapQuality& q = qualities[k];
+                Eigen::VectorXd values(q.simplices);
+                std::vector<unsigned char> red(q.simplices);
+                for (Index f = 0; f < q.simplices; ++f) {
+                    values[f] = q.per_simplex[f].conformal;
+                    red[f] = q.per_simplex[f].inverted || q.per_simplex[f].degenerate;
+                }
+                char title[200];
+                std::snprintf(title, sizeof title, "%s: %ld foldovers; conformal max %.3g",
+                              names[k], long(q.inverted), q.conformal.max);
+                picture.title = title;
+                plan.write(pngs[k], [&](const std::string& path) {
+                    write_layout_png(path, layouts[k], problem.mesh.simplices, values, picture,
+                                     red);
+                });
+                pictures += (k ? ", " : "") + pngs[k];
+            }
+        } catch (const Error& e) {
+            std::cerr << "sa: warning: a picture was not drawn: " << one_line(e.what()) << '\n';
+        }
     }
     plan.commit();
     std::cout << "\nconformal = sigma_max / sigma_min per triangle; verified = no inverted or "
                  "degenerate triangle and "
                  "every boundary vertex on the star, measured on the output positions.\n"
               << "wrote " << initial_path << ", " << unbounded_path << ", " << bounded_path
-              << " (cell data: det_J, conformal, isometric, volumetric, inverted)\n";
+              << " (cell data: det_J, conformal, isometric, volumetric, inverted)\n"
+              << (pictures.empty() ? "" : "wrote " + pictures + "\n");
     return all ? kExitVerified : kExitNotVerified;
 }
 

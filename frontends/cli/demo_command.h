@@ -2,7 +2,8 @@
 // `sa demo`: the paper's Figure 1 in miniature. A square grid's boundary goes onto a non-convex
 // eight-pointed star, the interior follows by a harmonic map (which folds near the reflex
 // corners), and Simplex Assembly repairs it with K_conf = inf and with K_conf = 4 (E_m = 0).
-// Writes the three maps as .vtu files and prints foldovers, distortion and time.
+// Writes the three maps as .vtu files, a picture of each beside it (.png: the layout coloured by
+// conformal distortion, foldovers in red) and prints foldovers, distortion and time.
 
 #include <CLI/CLI.hpp>
 #include <string>
@@ -14,7 +15,7 @@ struct DemoArguments {
     int size = 24;
     int threads = 0;
     std::string initialization;  ///< the disassembly's projection; empty: the default
-    bool force = false, quiet = false;
+    bool force = false, quiet = false, no_png = false;
 };
 
 CLI::App* add_demo_command(CLI::App& app, DemoArguments& arguments);

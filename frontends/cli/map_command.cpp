@@ -11,11 +11,13 @@
 #include "frontends/cli/runtime_settings.h"
 #include "frontends/output/iteration_recorder.h"
 #include "frontends/output/map_output.h"
+#include "frontends/output/map_picture.h"
 #include "frontends/output/map_report.h"
 #include "frontends/simplex_assembly/simplex_assembly.h"
 #include "geometry/io/index_list_io.h"
 #include "geometry/io/mesh_file.h"
 #include "optim/errors.h"
+#include "optim/stopwatch.h"
 
 namespace sa::cli {
 
@@ -92,6 +94,11 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
            "--out", a.out,
            "output map: .vtu .vtk .obj .off .mesh .node; other names get result records (resV)")
         ->required();
+    map->add_option("--png", a.png,
+                    "a picture of the map (default: --out with .png): 2D, the initial map and the "
+                    "result side by side coloured by conformal distortion; 3D, the result's "
+                    "surface coloured by isometric distortion; inverted simplices in red");
+    map->add_flag("--no-png", a.no_png, "do not draw the picture");
     map->add_option("--report", a.report, "JSON report: options, iterations, times, verification");
     map->add_option("--record", a.record,
                     "folder for a ParaView time series of the assembly (assembly.pvd)");
@@ -180,12 +187,16 @@ int run_map_command(const MapArguments& a) {
     options.max_time_seconds = a.max_time;
     options.num_threads = a.threads;
     options.validate();
+    const std::string png = a.no_png ? "" : a.png.empty() ? with_extension(a.out, ".png") : a.png;
+    if (!png.empty() && extension(png) != ".png")
+        throw InvalidArgumentError(png + ": --png takes a .png file");
     OutputPlan plan(a.force);
     plan.input("--rest", a.rest);
     plan.input("--init", a.init);
     plan.input("--handles", a.handles);
     plan.input("--targets", a.targets);
     plan.file("--out", a.out);
+    plan.file(a.png.empty() ? "--png (from --out)" : "--png", png);
     plan.file("--report", a.report);
     plan.folder("--record", a.record, {"assembly.pvd"});
     plan.check();
@@ -279,6 +290,21 @@ int run_map_command(const MapArguments& a) {
         const nlohmann::json report = map_report(problem, options, result);
         plan.write(a.report, [&](const std::string& path) { write_json(path, report); });
     }
+    // The picture last, after the solve; a picture that cannot be drawn (no OpenGL, no X server)
+    // costs the run nothing else: the map is written and one line says why.
+    std::string picture_written, picture_failed;
+    if (!png.empty()) {
+        set_activity("drawing --png " + png);
+        const Stopwatch clock;
+        try {
+            plan.write(png, [&](const std::string& path) { write_map_png(path, problem, result); });
+            char took[64];
+            std::snprintf(took, sizeof took, " (%.2f s)", clock.seconds());
+            picture_written = png + took;
+        } catch (const Error& e) {
+            picture_failed = one_line(e.what());
+        }
+    }
     std::string series;
     if (recorder) {
         const auto lock = output_lock();
@@ -299,8 +325,11 @@ int run_map_command(const MapArguments& a) {
               << " variables, " << result.newton.num_steps() + result.vertex_stage.num_steps()
               << " iterations, time " << times << "\n"
               << "  " << result.message << "\n"
-              << "  wrote " << a.out << (a.report.empty() ? "" : ", " + a.report)
-              << (series.empty() ? "" : ", " + series) << "\n";
+              << "  wrote " << a.out << (picture_written.empty() ? "" : ", " + picture_written)
+              << (a.report.empty() ? "" : ", " + a.report) << (series.empty() ? "" : ", " + series)
+              << "\n";
+    if (!picture_failed.empty())
+        std::cerr << "sa: warning: no picture " << png << ": " << picture_failed << '\n';
     return result.success ? kExitVerified : kExitNotVerified;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // `sa map`: an inversion-free map by Simplex Assembly from a rest mesh, an initial map and
-// handles; writes the result, a JSON report and, optionally, the iterations for ParaView.
+// handles; writes the result, a picture of it (frontends/output/map_picture.h), a JSON report
+// and, optionally, the iterations for ParaView.
 
 #include <CLI/CLI.hpp>
 #include <memory>
@@ -11,7 +12,7 @@
 namespace sa::cli {
 
 struct MapArguments {
-    std::string rest, init, handles, targets, out, report, record;
+    std::string rest, init, handles, targets, out, report, record, png;
     std::string distortion = "conformal", energy = "none", variant = "r", initialization;
     std::string bound = "inf", projection = "clamp", mode = "auto", linear_solver = "auto";
     int rings = 4, max_rings = 20, max_rounds = 2;
@@ -21,6 +22,7 @@ struct MapArguments {
     double max_time = kInfinity;
     std::uint64_t seed = 1;
     bool force = false, quiet = false, no_vertex_stage = false, until_valid = false;
+    bool no_png = false;
 };
 
 /// Adds the subcommand to `app`; `arguments` is filled when it is parsed.

@@ -88,6 +88,7 @@ CLI::App* add_param_command(CLI::App& app, ParamArguments& a) {
                      "wall-clock limit in seconds on the whole solve (every stage, fallback and "
                      "bound round takes what is left); the map reached by then is verified, "
                      "written and reported as it is")
+        ->check(number_or_inf_at_least(0.0, true))
         ->capture_default_str();
     param
         ->add_option("--out", a.out,

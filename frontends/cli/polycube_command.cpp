@@ -7,6 +7,7 @@
 
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/map_command.h"
+#include "frontends/cli/option_checks.h"
 #include "frontends/cli/out_of_memory.h"
 #include "frontends/output/map_report.h"
 #include "frontends/polycube/polycube_output.h"
@@ -56,7 +57,12 @@ CLI::App* add_polycube_command(CLI::App& app, PolycubeArguments& a) {
     polycube->add_option("--png", a.png,
                          "a picture of the PolyCube coloured by conformal distortion");
     polycube->add_option("--report", a.report, "JSON report");
-    polycube->add_option("--max-time", a.max_time, "wall-clock limit on the solve, in seconds");
+    polycube
+        ->add_option("--max-time", a.max_time,
+                     "wall-clock limit in seconds on the solve (every bound round takes what is "
+                     "left); the map reached by then is verified, written and reported as it is")
+        ->check(number_or_inf_at_least(0.0, true))
+        ->capture_default_str();
     polycube->add_option("--threads", a.threads, "worker threads, 0 = all cores")
         ->capture_default_str();
     polycube->add_flag("--force", a.force, "overwrite existing output files");
@@ -88,11 +94,11 @@ PolycubePlan check_polycube_arguments(const PolycubeArguments& a) {
                                    " and --optimal-bound: give one or the other");
     }
     plan.optimal_bound = a.optimal_bound;
-    if (a.max_time < 0.0 || !std::isfinite(a.max_time)) {
+    if (!(a.max_time > 0.0)) {
         throw InvalidArgumentError("--max-time " + std::to_string(a.max_time) +
-                                   ": expected a number of seconds > 0");
+                                   ": expected a number of seconds > 0, or inf");
     }
-    plan.max_time = a.max_time > 0.0 ? a.max_time : kInfinity;
+    plan.max_time = a.max_time;
     if (a.threads < 0) {
         throw InvalidArgumentError("--threads " + std::to_string(a.threads) + ": expected >= 0");
     }

@@ -25,7 +25,7 @@ namespace sa::cli {
 
 struct PolycubeArguments {
     std::string mesh, labels, label_surface, bound = "inf", out, vtu, png, report;
-    double max_time = 0.0;  ///< seconds; 0 = no limit
+    double max_time = kInfinity;  ///< seconds, > 0; inf: no limit
     int threads = 0;
     bool optimal_bound = false, force = false, quiet = false;
 };

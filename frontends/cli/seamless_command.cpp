@@ -28,10 +28,6 @@ namespace sa::cli {
 
 namespace {
 
-std::string with_extension(const std::string& path, const std::string& ext) {
-    return std::filesystem::path(path).replace_extension(ext).string();
-}
-
 /// The cut mesh in space with (u, v), the fields, curls and distortion: for ParaView.
 void write_seamless_vtu(const std::string& path, const SimplicialMesh& mesh,
                         const SeamlessResult& r) {
@@ -109,6 +105,7 @@ CLI::App* add_seamless_command(CLI::App& app, SeamlessArguments& a) {
                     "wall-clock limit in seconds on the whole run (the field's assembly and its "
                     "local repairs take what is left); the map reached by then is verified, "
                     "written and reported as it is")
+        ->check(number_or_inf_at_least(0.0, true))
         ->capture_default_str();
     cmd->add_option("--out", a.out, "the surface with per-corner texture coordinates (.obj)")
         ->required();

@@ -22,7 +22,12 @@ void write_checkerboard_png(const std::string& path, const Eigen::MatrixXd& posi
 void write_layout_png(const std::string& path, const Eigen::MatrixXd& uv,
                       const Eigen::MatrixXi& faces, const Eigen::VectorXd& values,
                       const LayoutPicture& picture, const std::vector<unsigned char>& inverted) {
-    pictures().write_layout_png(path, uv, faces, values, picture, inverted);
+    pictures().write_layouts_png(path, faces, {LayoutPanel{"", uv, values, inverted}}, picture);
+}
+
+void write_layouts_png(const std::string& path, const Eigen::MatrixXi& faces,
+                       const std::vector<LayoutPanel>& panels, const LayoutPicture& picture) {
+    pictures().write_layouts_png(path, faces, panels, picture);
 }
 
 void write_surface_value_png(const std::string& path, const Eigen::MatrixXd& positions,

@@ -813,7 +813,7 @@ std::vector<Case> catalogue() {
          "map --rest {D}/p.txt --out {D}/o.vtu --quiet",
          2,
          {"cannot write to standard output (No space left on device)"},
-         {"o.vtu"},
+         {"o.vtu", "o.png"},
          true},
 
         // Inputs that must succeed, verified.
@@ -822,7 +822,7 @@ std::vector<Case> catalogue() {
          "map --rest {D}/p.txt --out {D}/o.obj --quiet",
          0,
          {"success: verified"},
-         {"o.obj"}},
+         {"o.obj", "o.png"}},
         {"ObjWithByteOrderMark",
          [](const Inputs& in) {
              in.text("bump.obj", kBom + "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0.1\nf 1 2 3\nf 2 4 3\n");
@@ -848,7 +848,7 @@ std::vector<Case> catalogue() {
          "map --rest {D}/p.txt --handles {D}/h.txt --out {D}/o.obj --quiet",
          0,
          {"4 handles", "success: verified"},
-         {"o.obj"}},
+         {"o.obj", "o.png"}},
         {"MeshAt1e200",
          [](const Inputs& in) {
              in.text("p.txt", grid_problem(4, grid_boundary(4), {{5, {0.9e200, 0.9e200}}}, 1e200));
@@ -856,7 +856,7 @@ std::vector<Case> catalogue() {
          "map --rest {D}/p.txt --out {D}/o.obj --quiet",
          0,
          {"result:      0 inverted, 0 degenerate; conformal max 1 ", "success: verified"},
-         {"o.obj"}},
+         {"o.obj", "o.png"}},
         {"MeshAt1eMinus200",
          [](const Inputs& in) {
              in.text("p.txt",
@@ -865,7 +865,7 @@ std::vector<Case> catalogue() {
          "map --rest {D}/p.txt --out {D}/o.obj --quiet",
          0,
          {"result:      0 inverted, 0 degenerate; conformal max 1 ", "success: verified"},
-         {"o.obj"}},
+         {"o.obj", "o.png"}},
         {"SurfaceAt1e200",
          [](const Inputs& in) { in.mesh("b.off", bump(1e200)); },
          "param --mesh {D}/b.off --out {D}/uv.obj --quiet",
@@ -892,7 +892,7 @@ std::vector<Case> catalogue() {
                          "map --rest {D}/p.txt --out {D}/o.obj --quiet",
                          0,
                          {"success: verified"},
-                         {"o.obj"}});
+                         {"o.obj", "o.png"}});
     }
     // Two handles, one moved far: the best map is a similarity.
     cases.push_back({"TwoHandlesFarApart",
@@ -902,7 +902,7 @@ std::vector<Case> catalogue() {
                      "map --rest {D}/p.txt --out {D}/o.obj --quiet",
                      0,
                      {"conformal max 1 ", "success: verified"},
-                     {"o.obj"}});
+                     {"o.obj", "o.png"}});
     // `sa deform`: a 2 x 2 x 2 box of tetrahedra, its x = 0 face fixed and its x = 1 face
     // lifted, as rows `index x y z`.
     const auto lifted_box = [](const Inputs& in) {

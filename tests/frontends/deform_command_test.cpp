@@ -54,6 +54,11 @@ TEST(DeformCommand, ParsesItsOptions) {
     EXPECT_TRUE(d.optimal_bound);
     EXPECT_EQ(d.initialization, Initialization::kClosestRotation);
     EXPECT_EQ(d.mu, 1000.0);
+    EXPECT_EQ(d.max_time_seconds, kInfinity);
+    // --max-time reaches the start and the solve (which takes what the start left).
+    const DeformOptions timed = deform_options(parse(with({"--max-time", "60"})));
+    EXPECT_EQ(timed.max_time_seconds, 60.0);
+    EXPECT_EQ(timed.start.max_time_seconds, 60.0);
 }
 
 TEST(DeformCommand, BadOptionsAreNamed) {

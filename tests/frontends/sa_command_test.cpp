@@ -197,6 +197,35 @@ TEST_F(SaCommand, DemoRepairsTheFoldedHarmonicMap) {
     for (const char* f : {"initial.vtu", "conformal_unbounded.vtu", "conformal_bound4.vtu"}) {
         EXPECT_TRUE(fs::exists(path(std::string("demo/") + f))) << f;
     }
+    // A picture beside each, its path printed.
+    for (const char* f : {"initial.png", "conformal_unbounded.png", "conformal_bound4.png"}) {
+        const std::string png = path(std::string("demo/") + f);
+        ASSERT_TRUE(fs::exists(png)) << f;
+        EXPECT_GT(fs::file_size(png), 1000u) << f;
+        EXPECT_NE(r.out.find(png), std::string::npos) << r.out;
+    }
+    const Outcome plain = sa("demo --size 6 --quiet --no-png --out-dir " + path("plain"));
+    ASSERT_EQ(plain.status, 0) << plain.err;
+    EXPECT_TRUE(fs::exists(path("plain/initial.vtu")));
+    EXPECT_FALSE(fs::exists(path("plain/initial.png")));
+}
+
+TEST_F(SaCommand, EveryLongCommandTakesMaxTime) {
+    // The same option with the same check everywhere: a number or inf > 0, in the help.
+    for (const char* command : {"map", "param", "seamless", "deform", "polycube"}) {
+        const Outcome help = sa(std::string(command) + " --help");
+        EXPECT_NE(help.out.find("--max-time FLOAT:a number or inf > 0=inf"), std::string::npos)
+            << command << ":\n"
+            << help.out;
+        for (const char* bad : {"0", "-1", "nan"}) {
+            const Outcome r = sa(std::string(command) + " --max-time " + bad);
+            EXPECT_EQ(r.status, 2) << command;
+            EXPECT_EQ(r.err, std::string("sa: error: --max-time: must be a number or inf > 0, "
+                                         "found '") +
+                                 bad + "'\n")
+                << command;
+        }
+    }
 }
 
 TEST_F(SaCommand, ParamWritesAVerifiedUvMapAndRejectsANonDisk) {
