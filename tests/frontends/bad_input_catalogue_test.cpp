@@ -885,7 +885,8 @@ std::vector<Case> catalogue() {
     for (const auto& [name, far] : std::vector<std::pair<std::string, double>>{
              {"30", 30.0}, {"1e3", 1e3}, {"1e6", 1e6}, {"1e12", 1e12}}) {
         cases.push_back({"HandleMovedTo" + name,
-                         [far](const Inputs& in) {
+                         // An init-capture: clang 14 cannot capture a structured binding.
+                         [far = far](const Inputs& in) {
                              in.text("p.txt", grid_problem(3, grid_boundary(3), {{8, {far, far}}}));
                          },
                          "map --rest {D}/p.txt --out {D}/o.obj --quiet",
