@@ -1,6 +1,6 @@
 // The two triangular substitutions of a supernodal Cholesky solve, CHOLMOD's (cholmod_solve, one
-// thread) against SupernodalSolve's (optim/supernodal_solve.h) on one and two threads, on the
-// factor of a generated 3D system: an n x n x n grid of nodes with 3 unknowns each, every node
+// thread) against SupernodalSolve's (optim/detail/supernodal_solve.h) on one and two threads, on
+// the factor of a generated 3D system: an n x n x n grid of nodes with 3 unknowns each, every node
 // coupled to its 26 neighbours (the pattern of a tetrahedral mesh's vertex Hessian, denser). Prints
 // a table of the median of the repetitions, in milliseconds, and the bitwise comparison of the one-
 // and two-thread results. --matrix takes a symmetric matrix instead (its lower triangle, or the
@@ -20,7 +20,7 @@
 #include <iostream>
 #include <unsupported/Eigen/SparseExtra>
 
-#include "optim/supernodal_solve.h"
+#include "optim/detail/supernodal_solve.h"
 
 namespace {
 

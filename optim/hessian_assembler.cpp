@@ -1,4 +1,4 @@
-#include "optim/hessian_assembler.h"
+#include "optim/detail/hessian_assembler.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -8,7 +8,7 @@
 #include <limits>
 #include <sstream>
 
-#include "optim/prefault.h"
+#include "optim/detail/prefault.h"
 #include "optim/stopwatch.h"
 
 namespace sa {

@@ -12,8 +12,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "optim/detail/supernodal_solve.h"
 #include "optim/errors.h"
-#include "optim/supernodal_solve.h"
 
 namespace sa {
 

@@ -65,9 +65,9 @@ class LinearSolver {
     FactorizationStatus factorize(const Eigen::SparseMatrix<double>& lower);
     /// Solves with the last successful factorization. With the supernodal factorization of a
     /// Newton solve (FillOrdering::kBest), when its elimination tree splits, the substitutions
-    /// run on two threads of the caller's TBB arena (optim/supernodal_solve.h), with the same
-    /// result on any thread count.
-    /// Not for concurrent calls on one solver (neither are CHOLMOD's own solves).
+    /// run on two threads of the caller's TBB arena (optim/detail/supernodal_solve.h), with the
+    /// same result on any thread count. Not for concurrent calls on one solver (neither are
+    /// CHOLMOD's own solves).
     Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const;
     /// The same for several right-hand sides at once (one column each; level-3 BLAS).
     Eigen::MatrixXd solve_columns(const Eigen::MatrixXd& rhs) const;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "optim/detail/hessian_assembler.h"
 #include "optim/parallel.h"
 #include "optim/stopwatch.h"
 

@@ -15,13 +15,14 @@
 
 #include <memory>
 
-#include "optim/hessian_assembler.h"
 #include "optim/linear_solver.h"
 #include "optim/newton_options.h"
 #include "optim/newton_summary.h"
 #include "optim/problem.h"
 
 namespace sa {
+
+class HessianAssembler;  // optim/detail/hessian_assembler.h
 
 class NewtonSolver {
   public:

@@ -2,8 +2,8 @@
 
 #include <string>
 
+#include "optim/detail/hessian_assembler.h"
 #include "optim/errors.h"
-#include "optim/hessian_assembler.h"
 
 namespace sa {
 

@@ -1,4 +1,4 @@
-#include "optim/supernodal_solve.h"
+#include "optim/detail/supernodal_solve.h"
 
 #include <tbb/parallel_invoke.h>
 

@@ -4,8 +4,8 @@
 #include <string>
 
 #include "energies/distortion.h"
-#include "frontends/simplex_assembly/prepared_problem.h"
-#include "frontends/simplex_assembly/round_verification.h"
+#include "frontends/simplex_assembly/detail/prepared_problem.h"
+#include "frontends/simplex_assembly/detail/round_verification.h"
 
 #include "optim/errors.h"
 #include "optim/stopwatch.h"

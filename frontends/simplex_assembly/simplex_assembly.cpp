@@ -5,11 +5,11 @@
 #include <cstdio>
 #include <sstream>
 
-#include "frontends/simplex_assembly/prepared_problem.h"
-#include "frontends/simplex_assembly/round_verification.h"
-#include "frontends/simplex_assembly/submesh_assembly.h"
-#include "frontends/simplex_assembly/untangle_fallback.h"
-#include "frontends/simplex_assembly/vertex_stage.h"
+#include "frontends/simplex_assembly/detail/prepared_problem.h"
+#include "frontends/simplex_assembly/detail/round_verification.h"
+#include "frontends/simplex_assembly/detail/submesh_assembly.h"
+#include "frontends/simplex_assembly/detail/untangle_fallback.h"
+#include "frontends/simplex_assembly/detail/vertex_stage.h"
 #include "geometry/translation_gluing.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"

@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
-#include "frontends/simplex_assembly/prepared_problem.h"
-#include "frontends/simplex_assembly/vertex_stage.h"
+#include "frontends/simplex_assembly/detail/prepared_problem.h"
+#include "frontends/simplex_assembly/detail/vertex_stage.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
 #include "optim/time_budget.h"

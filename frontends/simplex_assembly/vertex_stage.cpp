@@ -1,4 +1,4 @@
-#include "frontends/simplex_assembly/vertex_stage.h"
+#include "frontends/simplex_assembly/detail/vertex_stage.h"
 
 #include "energies/boundary_angle_energy.h"
 #include "frontends/simplex_assembly/engine.h"

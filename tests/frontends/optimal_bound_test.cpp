@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "frontends/simplex_assembly/prepared_problem.h"
+#include "frontends/simplex_assembly/detail/prepared_problem.h"
 #include "geometry/mesh_generators.h"
 #include "optim/errors.h"
 

@@ -3,7 +3,7 @@
 
 #include <random>
 
-#include "optim/hessian_assembler.h"
+#include "optim/detail/hessian_assembler.h"
 #include "optim/optim.h"
 #include "test_energies.h"
 

@@ -84,8 +84,8 @@ TEST_P(LinearSolverTest, IgnoresTheUpperTriangle) {
 }
 
 // A system large enough for the supernodal solver to split its substitutions over two threads
-// (optim/supernodal_solve.h): the same solution as CHOLMOD's own substitutions (solve_columns),
-// and the same bits on one thread as on two.
+// (optim/detail/supernodal_solve.h): the same solution as CHOLMOD's own substitutions
+// (solve_columns), and the same bits on one thread as on two.
 TEST(LinearSolver, SplitSubstitutionsMatchCholmodsOnAnyThreadCount) {
     const int nx = 120, ny = 90, n = nx * ny;
     std::vector<Eigen::Triplet<double>> entries;

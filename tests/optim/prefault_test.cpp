@@ -1,4 +1,4 @@
-#include "optim/prefault.h"
+#include "optim/detail/prefault.h"
 
 #include <gtest/gtest.h>
 

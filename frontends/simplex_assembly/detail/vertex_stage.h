@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "frontends/simplex_assembly/assembly_problem.h"
+#include "frontends/simplex_assembly/detail/assembly_problem.h"
 #include "frontends/simplex_assembly/simplex_assembly_options.h"
 #include "frontends/simplex_assembly/simplex_term.h"
 #include "geometry/boundary_fans.h"

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "energies/simplex_energy.h"
-#include "frontends/simplex_assembly/assembly_problem.h"
+#include "frontends/simplex_assembly/detail/assembly_problem.h"
 #include "frontends/simplex_assembly/simplex_assembly.h"
 #include "geometry/mesh_topology.h"
 #include "geometry/rest_frames.h"
