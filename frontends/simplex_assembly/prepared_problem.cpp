@@ -421,6 +421,22 @@ double mesh_energy(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions
 }
 
 template <int D>
+void verify_handles(const MappingProblem& input, const SimplexAssemblyOptions& options,
+                    const Eigen::MatrixXd& positions, Verification& v) {
+    v.handles = static_cast<Index>(input.handles.size());
+    for (std::size_t k = 0; k < input.handles.size(); ++k) {
+        const Eigen::RowVectorXd target =
+            input.targets.size() > 0
+                ? Eigen::RowVectorXd(input.targets.row(k).head(D))
+                : Eigen::RowVectorXd(input.initial.row(input.handles[k]).head(D));
+        v.handle_error =
+            std::max(v.handle_error, (positions.row(input.handles[k]) - target).norm());
+    }
+    v.handle_tolerance =
+        options.handle_tolerance * bounding_box_diagonal(input.initial.leftCols(D));
+}
+
+template <int D>
 void verify_result(const MappingProblem& input, const SimplexAssemblyOptions& options,
                    SimplexAssemblyResult& result, const MeshTopology* topology) {
     const SimplicialMesh& original = input.mesh;
@@ -448,17 +464,7 @@ void verify_result(const MappingProblem& input, const SimplexAssemblyOptions& op
             static_cast<Index>(D == 2 ? branched_vertices(original, t, result.positions).size()
                                       : branched_edges(original, t, result.positions).size());
     }
-    v.handles = static_cast<Index>(input.handles.size());
-    for (std::size_t k = 0; k < input.handles.size(); ++k) {
-        const Eigen::RowVectorXd target =
-            input.targets.size() > 0
-                ? Eigen::RowVectorXd(input.targets.row(k).head(D))
-                : Eigen::RowVectorXd(input.initial.row(input.handles[k]).head(D));
-        v.handle_error =
-            std::max(v.handle_error, (result.positions.row(input.handles[k]) - target).norm());
-    }
-    v.handle_tolerance =
-        options.handle_tolerance * bounding_box_diagonal(input.initial.leftCols(D));
+    verify_handles<D>(input, options, result.positions, v);
     v.bound = options.builtin_energy ? options.bound : kInfinity;
     for (Index s = 0; s < original.num_simplices(); ++s) {
         const MatrixInvariants<double> m = matrix_invariants<D>(out[s], false);
@@ -493,6 +499,10 @@ template void restart_problem<2>(PreparedProblem<2>&, const SimplexAssemblyOptio
 template void restart_problem<3>(PreparedProblem<3>&, const SimplexAssemblyOptions&, StageTimes&);
 template double mesh_energy<2>(const PreparedProblem<2>&, const Eigen::MatrixXd&);
 template double mesh_energy<3>(const PreparedProblem<3>&, const Eigen::MatrixXd&);
+template void verify_handles<2>(const MappingProblem&, const SimplexAssemblyOptions&,
+                                const Eigen::MatrixXd&, Verification&);
+template void verify_handles<3>(const MappingProblem&, const SimplexAssemblyOptions&,
+                                const Eigen::MatrixXd&, Verification&);
 template void verify_result<2>(const MappingProblem&, const SimplexAssemblyOptions&,
                                SimplexAssemblyResult&, const MeshTopology*);
 template void verify_result<3>(const MappingProblem&, const SimplexAssemblyOptions&,

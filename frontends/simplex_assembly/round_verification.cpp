@@ -116,16 +116,7 @@ void verify_changes(const PreparedProblem<D>& p, const SimplexAssemblyOptions& o
         if (v.inverted == 0 && v.degenerate == 0) {
             for (Index u = 0; u < nv; ++u) v.branched += state.branched[u];
         }
-        v.handles = static_cast<Index>(input.handles.size());
-        for (std::size_t k = 0; k < input.handles.size(); ++k) {
-            const Eigen::RowVectorXd target =
-                input.targets.size() > 0
-                    ? Eigen::RowVectorXd(input.targets.row(k).head(D))
-                    : Eigen::RowVectorXd(input.initial.row(input.handles[k]).head(D));
-            v.handle_error = std::max(v.handle_error, (x.row(input.handles[k]) - target).norm());
-        }
-        v.handle_tolerance =
-            options.handle_tolerance * bounding_box_diagonal(input.initial.leftCols(D));
+        verify_handles<D>(input, options, x, v);
         v.bound = options.builtin_energy ? options.bound : kInfinity;
         for (std::size_t k = 0; k < own.size(); ++k) {
             v.bounds.push_back({own[k]->name(), own[k]->bound(),

@@ -92,6 +92,13 @@ SimplexAssemblyResult solve_prepared(PreparedProblem<D>& p, const SimplexAssembl
 template <int D>
 double mesh_energy(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions);
 
+/// The handles' part of a verification: v.handles, the largest distance of a handle in
+/// `positions` (#V x D, original units) from its target (or its initial position), and the
+/// tolerance (options.handle_tolerance times the initial map's bounding-box diagonal).
+template <int D>
+void verify_handles(const MappingProblem& input, const SimplexAssemblyOptions& options,
+                    const Eigen::MatrixXd& positions, Verification& v);
+
 /// Measures result.positions (original units) against the rest shape and the targets: fills
 /// final_quality, verification and success. `topology`, when given, is input.mesh's (it is
 /// computed otherwise).
