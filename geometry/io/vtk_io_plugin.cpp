@@ -3,6 +3,7 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCellTypes.h>
+#include <vtkDataObjectTypes.h>
 #include <vtkDataSet.h>
 #include <vtkDataSetReader.h>
 #include <vtkDoubleArray.h>
@@ -506,6 +507,23 @@ MeshFile read_vtk_file(const std::string& path) {
     check_legacy_header(path);
     check_legacy_cells(path);
     auto reader = vtkSmartPointer<vtkDataSetReader>::New();
+    // VTK's own dispatch on the DATASET keyword, before any dataset reader runs: only the two
+    // mesh types are read (the structured-grid reader crashes on malformed metadata, found by
+    // fuzz_vtk, tests/fuzz/regressions/vtk/structured-grid-metadata-segv).
+    reader->SetFileName(path.c_str());
+    int type = -1;
+    std::string error;
+    {
+        VtkCapture capture;
+        type = reader->ReadOutputType();
+        error = capture.error();
+    }
+    if (!error.empty()) throw InputError(path + ": cannot read as legacy VTK (VTK: " + error + ")");
+    if (type != VTK_UNSTRUCTURED_GRID && type != VTK_POLY_DATA) {
+        const char* name = vtkDataObjectTypes::GetClassNameFromTypeId(type);
+        throw InputError(path + ": dataset type " + (name ? name : "unknown") +
+                         "; only UNSTRUCTURED_GRID and POLYDATA are supported");
+    }
     run_reader(*reader, path, "legacy VTK");
     vtkDataSet* data = reader->GetOutput();
     if (data == nullptr) throw InputError(path + ": cannot read as legacy VTK");
