@@ -4,6 +4,7 @@ set(SA_GEOMETRY_IO_SOURCES
     io/frame_field_io.cpp
     io/index_list_io.cpp
     io/indexed_positions_io.cpp
+    io/legacy_vtk_reader.cpp
     io/medit_io.cpp
     io/mesh_file.cpp
     io/obj_io.cpp
@@ -21,5 +22,6 @@ set(SA_GEOMETRY_IO_SOURCES
 set(SA_FILE_SUPPORT_SOURCES
     io/atomic_file.cpp
     io/text_reader.cpp
+    io/vtk_cells.cpp
     io/write_checks.cpp
 )
