@@ -1,5 +1,6 @@
 #include "geometry/io/vtk_cells.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -38,21 +39,29 @@ MeshFile mesh_from_vtk_cells(const std::string& path, const Eigen::MatrixXd& poi
         throw InputError(path + ": " + std::to_string(num_cells) + " cell types for " +
                          std::to_string(cells.offsets.size() - 1) + " cells");
 
-    int type = 0;
+    // The mesh is made of the tetrahedra when there are any, else of the triangles. Cells of a
+    // lower dimension (vertices, lines, and triangles beside tetrahedra: what Gmsh writes for the
+    // boundary and the geometry's points and curves) are skipped with a warning; any other cell
+    // type is an error.
+    const auto lower_dimensional = [](int t) { return t >= 1 && t <= 4; };  // vertex ... poly line
+    const bool tets =
+        std::find(cells.types.begin(), cells.types.end(), kVtkTetra) != cells.types.end();
+    const int type = tets ? kVtkTetra : kVtkTriangle;
+    std::size_t kept = 0;
     for (std::size_t c = 0; c < num_cells; ++c) {
         const int t = cells.types[c];
-        if (c == 0) {
-            if (t != kVtkTriangle && t != kVtkTetra)
-                throw InputError(path + ": cell 0 has type " + vtk_cell_type_name(t) +
-                                 "; only triangles (5) or tetrahedra (10) are supported");
-            type = t;
-        } else if (t != type) {
+        if (t == type) {
+            ++kept;
+        } else if (!lower_dimensional(t) && !(tets && t == kVtkTriangle)) {
             throw InputError(path + ": cell " + std::to_string(c) + " has type " +
-                             vtk_cell_type_name(t) + " but cell 0 has type " +
-                             vtk_cell_type_name(type) +
-                             "; all cells must be triangles (5) or all tetrahedra (10)");
+                             vtk_cell_type_name(t) +
+                             "; only triangles (5) or tetrahedra (10) are read (and vertices, "
+                             "lines and, beside tetrahedra, triangles skipped)");
         }
     }
+    if (kept == 0 && num_cells > 0)
+        throw InputError(path + ": no triangles or tetrahedra; cell 0 has type " +
+                         vtk_cell_type_name(cells.types[0]));
     const int k = type == kVtkTetra ? 4 : 3;
 
     MeshFile result;
@@ -68,13 +77,15 @@ MeshFile mesh_from_vtk_cells(const std::string& path, const Eigen::MatrixXd& poi
     }
     mesh.vertices = flat ? Eigen::MatrixXd(points.leftCols(2)) : points;
 
-    mesh.simplices.resize(static_cast<Eigen::Index>(num_cells), k);
+    mesh.simplices.resize(static_cast<Eigen::Index>(kept), k);
+    Eigen::Index row = 0;
     for (std::size_t c = 0; c < num_cells; ++c) {
         const std::int64_t begin = cells.offsets[c], size = cells.offsets[c + 1] - begin;
         if (begin < 0 || size < 0 ||
             cells.offsets[c + 1] > static_cast<std::int64_t>(cells.connectivity.size()))
             throw InputError(path + ": the offsets of cell " + std::to_string(c) +
                              " are out of order or past the connectivity");
+        if (cells.types[c] != type) continue;
         if (size != k)
             throw InputError(path + ": cell " + std::to_string(c) + " has " + std::to_string(size) +
                              " points; expected " + std::to_string(k));
@@ -84,9 +95,15 @@ MeshFile mesh_from_vtk_cells(const std::string& path, const Eigen::MatrixXd& poi
                 throw InputError(path + ": cell " + std::to_string(c) + " refers to point " +
                                  std::to_string(v) + ", out of range [0, " +
                                  std::to_string(points.rows() - 1) + "]");
-            mesh.simplices(static_cast<Eigen::Index>(c), j) = static_cast<int>(v);
+            mesh.simplices(row, j) = static_cast<int>(v);
         }
+        ++row;
     }
+    if (kept < num_cells)
+        result.warnings.push_back(path + ": skipped " + std::to_string(num_cells - kept) +
+                                  " lower-dimensional cells (vertices, lines" +
+                                  (tets ? ", triangles" : "") + "); read the " +
+                                  std::to_string(kept) + (tets ? " tetrahedra" : " triangles"));
     return result;
 }
 

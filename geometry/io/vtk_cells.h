@@ -26,10 +26,12 @@ struct VtkCells {
     std::vector<std::int64_t> connectivity;
 };
 
-/// The mesh of `points` (#P x 3) and `cells`: all triangles (5) or all tetrahedra (10), indices in
-/// range, coordinates finite. A triangle mesh whose z coordinates are all 0 is read as 2D.
-/// Throws InputError `PATH: cell C has type ...` (or `refers to point ...`, `point I has a
-/// non-finite coordinate`) naming the first offending element.
+/// The mesh of `points` (#P x 3) and `cells`: their tetrahedra (10) when there are any, else
+/// their triangles (5); vertices, lines and, beside tetrahedra, triangles are skipped with a
+/// warning (a Gmsh export holds them), indices in range, coordinates finite. A triangle mesh
+/// whose z coordinates are all 0 is read as 2D. Throws InputError `PATH: cell C has type ...`
+/// (another type: quads, hexahedra, ...; or `refers to point ...`, `point I has a non-finite
+/// coordinate`) naming the first offending element.
 MeshFile mesh_from_vtk_cells(const std::string& path, const Eigen::MatrixXd& points,
                              const VtkCells& cells);
 

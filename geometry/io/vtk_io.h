@@ -2,12 +2,14 @@
 // VTK meshes: legacy .vtk (UNSTRUCTURED_GRID or POLYDATA, ASCII or BINARY, the classic and the
 // version 5 cell layouts) and XML .vtu (unstructured grid).
 //
-// Read: all cells VTK_TRIANGLE (5) or all VTK_TETRA (10). A triangle mesh whose z coordinates are
-// all 0 is read as 2D. Written: an unstructured grid with double-precision points (2D positions
-// padded with z = 0), the cells, and optional point and cell data arrays; .vtk in ASCII with the
-// classic `CELLS`/`CELL_TYPES` layout (legacy file version 4.2, which older readers understand)
-// and 17 significant digits (written here: VTK's legacy writer rounds to 11), arrays as `FIELD`
-// data; .vtu by VTK, binary appended (VTK's default, zlib-compressed).
+// Read: the VTK_TETRA (10) cells when there are any, else the VTK_TRIANGLE (5) cells; vertices,
+// lines and, beside tetrahedra, triangles are skipped with a warning (what a Gmsh export holds),
+// any other cell type is an error. A triangle mesh whose z coordinates are all 0 is read as 2D.
+// Written: an unstructured grid with double-precision points (2D positions padded with z = 0), the
+// cells, and optional point and cell data arrays; .vtk in ASCII with the classic
+// `CELLS`/`CELL_TYPES` layout (legacy file version 4.2, which older readers understand) and 17
+// significant digits (written here: VTK's legacy writer rounds to 11), arrays as `FIELD` data; .vtu
+// by VTK, binary appended (VTK's default, zlib-compressed).
 //
 // Legacy files are read here without VTK (geometry/io/legacy_vtk_reader.cpp: VTK's own legacy
 // readers trust the file's counts). The rest goes through the VTK library, loaded on the first
@@ -37,8 +39,8 @@ struct DataArray {
 /// z = 0), simplices #S x 3 or #S x 4; the file's POINT_DATA and CELL_DATA are not read. Throws
 /// InputError `FILE:LINE: ...` (`FILE: byte N: ...` in a binary file's data) naming what is
 /// malformed: a section cut short or holding a non-number, a count the file cannot hold, another
-/// dataset type, the first cell that is not a triangle or tetrahedron (or of another type than the
-/// first cell) and its type, an index out of range.
+/// dataset type, the first cell of a type that is not read (a quad, a hexahedron, ...) and its
+/// type, an index out of range.
 MeshFile read_vtk(const std::string& path);
 
 /// Reads an XML .vtu file, as read_vtk(); errors carry VTK's message.

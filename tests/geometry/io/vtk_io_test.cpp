@@ -50,6 +50,23 @@ TEST(VtkIo, ReadsLegacyUnstructuredGrid) {
     EXPECT_EQ(file.mesh.simplices, expected);
 }
 
+// What Gmsh writes: the geometry's points (1), curves (3) and boundary triangles (5) beside the
+// tetrahedra. The tetrahedra are read; the rest is skipped with a warning.
+TEST(VtkIo, SkipsLowerDimensionalCellsBesideTheTetrahedra) {
+    TempFolder folder;
+    const MeshFile file =
+        read_vtk(folder.write("gmsh.vtk", legacy_grid("1 4\n2 0 1\n3 0 1 2\n4 0 1 2 3\n4 1 2 3 4\n",
+                                                      5, 19, "1\n3\n5\n10\n10\n")));
+    Eigen::MatrixXi expected(2, 4);
+    expected << 0, 1, 2, 3, 1, 2, 3, 4;
+    EXPECT_EQ(file.mesh.simplices, expected);
+    ASSERT_EQ(file.warnings.size(), 1u);
+    EXPECT_NE(file.warnings[0].find("gmsh.vtk: skipped 3 lower-dimensional cells (vertices, "
+                                    "lines, triangles); read the 2 tetrahedra"),
+              std::string::npos)
+        << file.warnings[0];
+}
+
 TEST(VtkIo, ReadsFlatPolyDataAsTwoDimensional) {
     TempFolder folder;
     const MeshFile file = read_vtk(
@@ -140,8 +157,8 @@ TEST(VtkIo, MalformedFilesAreErrorsAndNothingIsPrinted) {
     testing::internal::CaptureStderr();
     testing::internal::CaptureStdout();
     EXPECT_TRUE(throws_input_error(
-        read("mixed.vtk", legacy_grid("3 0 1 2\n4 0 1 2 3\n", 2, 9, "5\n10\n")),
-        {"mixed.vtk: cell 1 has type 10 (vtkTetra) but cell 0 has type 5 (vtkTriangle)"}));
+        read("mixed.vtk", legacy_grid("3 0 1 2\n4 0 1 2 3\n4 0 1 2 3\n", 3, 14, "5\n10\n9\n")),
+        {"mixed.vtk: cell 2 has type 9 (vtkQuad)"}));
     EXPECT_TRUE(throws_input_error(read("quad.vtk", legacy_grid("4 0 1 2 3\n", 1, 5, "9\n")),
                                    {"quad.vtk: cell 0 has type 9 (vtkQuad)", "only triangles"}));
     EXPECT_TRUE(throws_input_error(read("garbage.vtk", "not a vtk file\n"),
@@ -263,7 +280,8 @@ TEST(VtkIo, MalformedLegacySectionsAreNamedWithTheirLine) {
                                  "CELL_TYPES 1\n5\n"),
         {"range.vtk: cell 0 refers to point 3, out of range [0, 2]"}));
     EXPECT_TRUE(throws_input_error(read("lines.vtk", poly("3.0", "LINES 1 3\n2 0 1\n")),
-                                   {"lines.vtk: cell 0 has type 3 (vtkLine)"}));
+                                   {"lines.vtk: no triangles or tetrahedra; cell 0 has type 3 "
+                                    "(vtkLine)"}));
     EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
     // Keywords in any case, both cell layouts (the version 5 one told by its OFFSETS keyword),
     // CELL_TYPES before CELLS, FIELD and METADATA sections, and the data after POINT_DATA are read.
