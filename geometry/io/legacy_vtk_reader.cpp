@@ -24,18 +24,13 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <charconv>
 #include <cstdint>
-#include <cstdio>
-#include <cstring>
-#include <fstream>
-#include <limits>
-#include <sstream>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
-#include "geometry/io/text_reader.h"
+#include "geometry/io/byte_cursor.h"
 #include "geometry/io/vtk_cells.h"
 #include "geometry/io/vtk_io.h"
 #include "optim/errors.h"
@@ -43,88 +38,42 @@
 namespace sa {
 namespace {
 
-/// A value type of the format: its keyword and its size in a binary file.
+/// A value type of the format: its keyword and how a binary file holds it (bytes, floating,
+/// signed).
 struct ValueType {
     const char* name;
-    int bytes;
-    bool floating;
-    bool is_signed;
+    io::BinaryType binary;
 };
 
-constexpr ValueType kValueTypes[] = {{"char", 1, false, true},
-                                     {"signed_char", 1, false, true},
-                                     {"unsigned_char", 1, false, false},
-                                     {"short", 2, false, true},
-                                     {"unsigned_short", 2, false, false},
-                                     {"int", 4, false, true},
-                                     {"unsigned_int", 4, false, false},
-                                     {"long", 8, false, true},
-                                     {"unsigned_long", 8, false, false},
-                                     {"vtktypeint64", 8, false, true},
-                                     {"vtktypeuint64", 8, false, false},
-                                     {"vtkidtype", 8, false, true},
-                                     {"float", 4, true, true},
-                                     {"double", 8, true, true}};
+constexpr ValueType kValueTypes[] = {{"char", {1, false, true}},
+                                     {"signed_char", {1, false, true}},
+                                     {"unsigned_char", {1, false, false}},
+                                     {"short", {2, false, true}},
+                                     {"unsigned_short", {2, false, false}},
+                                     {"int", {4, false, true}},
+                                     {"unsigned_int", {4, false, false}},
+                                     {"long", {8, false, true}},
+                                     {"unsigned_long", {8, false, false}},
+                                     {"vtktypeint64", {8, false, true}},
+                                     {"vtktypeuint64", {8, false, false}},
+                                     {"vtkidtype", {8, false, true}},
+                                     {"float", {4, true, true}},
+                                     {"double", {8, true, true}}};
 constexpr const ValueType& kInt = kValueTypes[5];
 
 /// Counts above this are refused before anything is allocated (a point or cell count must also
 /// fit an int; this bounds the products of counts).
-constexpr long long kMaxCount = std::numeric_limits<int>::max();
+constexpr long long kMaxCount = 2147483647;
 
-bool is_space(char c) {
-    return c == ' ' || c == '\n' || c == '\r' || c == '\t' || c == '\f' || c == '\v';
-}
-
-bool is_keyword(std::string_view token, std::string_view keyword) {
-    if (token.size() != keyword.size()) return false;
-    for (std::size_t i = 0; i < token.size(); ++i) {
-        if (std::tolower(static_cast<unsigned char>(token[i])) != keyword[i]) return false;
-    }
-    return true;
-}
-
-/// The offset of the first byte that is neither printable nor whitespace, or npos.
-std::size_t first_control_byte(std::string_view bytes) {
-    for (std::size_t i = 0; i < bytes.size(); ++i) {
-        const auto c = static_cast<unsigned char>(bytes[i]);
-        if ((c < 0x20 && !is_space(static_cast<char>(c))) || c == 0x7f) return i;
-    }
-    return std::string_view::npos;
-}
-
-std::string control_byte_message(std::string_view bytes, std::size_t offset) {
-    char byte[8];
-    std::snprintf(byte, sizeof byte, "0x%02x", static_cast<unsigned char>(bytes[offset]));
-    return std::string("not a text file (byte ") + byte + " at offset " + std::to_string(offset) +
-           ")";
-}
-
-/// `'token'` for messages: at most 40 bytes, bytes that are not printable as \xNN (a BINARY
-/// file's data read as a keyword).
-std::string quoted(std::string_view token) {
-    std::string text = "'";
-    for (const char c : token.substr(0, 40)) {
-        if (std::isprint(static_cast<unsigned char>(c)) != 0) {
-            text.push_back(c);
-        } else {
-            char escape[8];
-            std::snprintf(escape, sizeof escape, "\\x%02x", static_cast<unsigned char>(c));
-            text.append(escape);
-        }
-    }
-    return text + (token.size() > 40 ? "...'" : "'");
+std::string upper(std::string_view token) {
+    std::string text(token.substr(0, 40));
+    for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return text;
 }
 
 class LegacyVtkParser {
   public:
-    explicit LegacyVtkParser(std::string path) : path_(std::move(path)) {
-        io::check_readable(path_);
-        std::ifstream in(path_, std::ios::binary);
-        std::ostringstream buffer;
-        buffer << in.rdbuf();
-        if (in.bad()) throw InputError(path_ + ": cannot read (" + std::strerror(errno) + ")");
-        bytes_ = std::move(buffer).str();
-    }
+    explicit LegacyVtkParser(std::string path) : in_(std::move(path)) {}
 
     MeshFile read() {
         read_header();
@@ -134,32 +83,33 @@ class LegacyVtkParser {
         std::array<io::VtkCells, 4> poly_sections;  // POLYDATA, in VTK's order of cell ids
         static const char* const kPolySections[] = {"vertices", "lines", "polygons",
                                                     "triangle_strips"};
-        for (std::string_view token = next_token(); !token.empty(); token = next_token()) {
+        for (std::string_view token = in_.next_token(); !token.empty(); token = in_.next_token()) {
             const std::string section = upper(token);
-            if (is_keyword(token, "point_data") || is_keyword(token, "cell_data")) break;
-            if (is_keyword(token, "field")) {
+            if (io::is_keyword(token, "point_data") || io::is_keyword(token, "cell_data")) break;
+            if (io::is_keyword(token, "field")) {
                 skip_field();
-            } else if (is_keyword(token, "metadata")) {
+            } else if (io::is_keyword(token, "metadata")) {
                 skip_metadata();
-            } else if (is_keyword(token, "points")) {
+            } else if (io::is_keyword(token, "points")) {
                 if (have_points) fail("a second POINTS section");
                 points = read_points();
                 have_points = true;
-            } else if (!polydata_ && is_keyword(token, "cells")) {
+            } else if (!polydata_ && io::is_keyword(token, "cells")) {
                 if (have_cells) fail("a second CELLS section");
                 const std::vector<int> types = std::move(cells.types);
                 cells = read_cells(section);
                 cells.types = types;
                 have_cells = true;
-            } else if (!polydata_ && is_keyword(token, "cell_types")) {
+            } else if (!polydata_ && io::is_keyword(token, "cell_types")) {
                 if (have_types) fail("a second CELL_TYPES section");
                 cells.types = read_cell_types();
                 have_types = true;
             } else {
                 std::size_t kind = 0;
-                while (kind < 4 && !(polydata_ && is_keyword(token, kPolySections[kind]))) ++kind;
+                while (kind < 4 && !(polydata_ && io::is_keyword(token, kPolySections[kind])))
+                    ++kind;
                 if (kind == 4)
-                    fail("unknown section " + quoted(token) + " in a DATASET " +
+                    fail("unknown section " + io::quoted_bytes(token) + " in a DATASET " +
                          (polydata_ ? "POLYDATA" : "UNSTRUCTURED_GRID"));
                 if (poly_sections[kind].offsets.size() > 1)
                     fail("a second " + section + " section");
@@ -167,56 +117,59 @@ class LegacyVtkParser {
                 set_poly_types(kind, poly_sections[kind]);
             }
         }
-        if (!have_points) throw InputError(path_ + ": no POINTS section");
+        if (!have_points) throw InputError(in_.path() + ": no POINTS section");
         if (polydata_) {
             cells = io::VtkCells{};
             for (const io::VtkCells& section : poly_sections) append(cells, section);
         } else if (have_cells != have_types) {
-            throw InputError(path_ + (have_cells ? ": a CELLS section without CELL_TYPES"
-                                                 : ": a CELL_TYPES section without CELLS"));
+            throw InputError(in_.path() + (have_cells ? ": a CELLS section without CELL_TYPES"
+                                                      : ": a CELL_TYPES section without CELLS"));
         } else if (cells.types.size() + 1 != cells.offsets.size()) {
-            throw InputError(path_ + ": CELLS declares " +
+            throw InputError(in_.path() + ": CELLS declares " +
                              std::to_string(cells.offsets.size() - 1) + " cells but CELL_TYPES " +
                              std::to_string(cells.types.size()));
         }
-        return io::mesh_from_vtk_cells(path_, points, cells);
+        return io::mesh_from_vtk_cells(in_.path(), points, cells);
     }
 
   private:
     void read_header() {
-        if (bytes_.compare(0, 3, "\xEF\xBB\xBF") == 0)
+        const std::string_view bytes = in_.bytes();
+        if (bytes.substr(0, 3) == "\xEF\xBB\xBF")
             fail("starts with a UTF-8 byte-order mark, which legacy VTK readers do not accept");
-        const std::string_view first = line_at(0);
-        if (const std::size_t bad = first_control_byte(first); bad != std::string_view::npos)
-            throw InputError(path_ + ": " + control_byte_message(first, bad) +
+        const std::string_view first = in_.rest_of_line();
+        if (const std::size_t bad = io::first_control_byte(first); bad != std::string_view::npos)
+            throw InputError(in_.path() + ": " + io::control_byte_message(first, bad) +
                              ", so not a legacy VTK file: a binary or compressed file?");
         if (first.rfind("# vtk DataFile Version", 0) != 0)
-            fail("expected '# vtk DataFile Version x.y', found " + quoted(first));
-        skip_rest_of_line();  // the version line
-        skip_rest_of_line();  // the title
-        const std::string_view format = token("ASCII or BINARY");
-        if (is_keyword(format, "binary")) {
-            binary_ = true;
-        } else if (is_keyword(format, "ascii")) {
-            const std::string_view rest = std::string_view(bytes_).substr(position_);
-            if (const std::size_t bad = first_control_byte(rest); bad != std::string_view::npos) {
-                position_ += bad;
-                line_ += static_cast<int>(std::count(rest.begin(), rest.begin() + bad, '\n'));
-                fail(control_byte_message(bytes_, position_) + " in an ASCII file");
+            fail("expected '# vtk DataFile Version x.y', found " + io::quoted_bytes(first));
+        in_.skip_line();  // the version line
+        in_.skip_line();  // the title
+        const std::string_view format = in_.token("ASCII or BINARY");
+        if (io::is_keyword(format, "binary")) {
+            in_.set_binary();
+        } else if (io::is_keyword(format, "ascii")) {
+            const std::size_t bad = io::first_control_byte(bytes.substr(in_.position()));
+            if (bad != std::string_view::npos) {
+                const std::size_t at = in_.position() + bad;
+                while (in_.position() + in_.rest_of_line().size() < at)
+                    in_.skip_line();  // to the line of the bad byte, for the message
+                fail(io::control_byte_message(bytes, at) + " in an ASCII file");
             }
         } else {
-            fail("expected ASCII or BINARY, found " + quoted(format));
+            fail("expected ASCII or BINARY, found " + io::quoted_bytes(format));
         }
-        const std::string_view dataset = token("DATASET");
-        if (!is_keyword(dataset, "dataset")) fail("expected DATASET, found " + quoted(dataset));
-        const std::string_view type = token("the dataset type");
-        if (is_keyword(type, "polydata")) {
+        const std::string_view dataset = in_.token("DATASET");
+        if (!io::is_keyword(dataset, "dataset"))
+            fail("expected DATASET, found " + io::quoted_bytes(dataset));
+        const std::string_view type = in_.token("the dataset type");
+        if (io::is_keyword(type, "polydata")) {
             polydata_ = true;
-        } else if (!is_keyword(type, "unstructured_grid")) {
-            const bool known = is_keyword(type, "structured_points") ||
-                               is_keyword(type, "structured_grid") ||
-                               is_keyword(type, "rectilinear_grid");
-            fail((known ? "dataset type " : "unknown dataset type ") + quoted(type) +
+        } else if (!io::is_keyword(type, "unstructured_grid")) {
+            const bool known = io::is_keyword(type, "structured_points") ||
+                               io::is_keyword(type, "structured_grid") ||
+                               io::is_keyword(type, "rectilinear_grid");
+            fail((known ? "dataset type " : "unknown dataset type ") + io::quoted_bytes(type) +
                  "; only UNSTRUCTURED_GRID and POLYDATA are supported");
         }
     }
@@ -236,11 +189,11 @@ class LegacyVtkParser {
     io::VtkCells read_cells(const std::string& section) {
         const long long n = count(section, "cell count");
         const long long size = count(section, "size");
-        if (binary_) skip_rest_of_line();
+        if (in_.binary()) in_.skip_line();
         io::VtkCells cells;
         if (next_is_offsets()) {
             // Version 5: n offsets rising from 0 to size (n = #cells + 1), then the points.
-            token("OFFSETS");
+            in_.token("OFFSETS");
             const std::string offsets_section = section + " OFFSETS";
             cells.offsets =
                 read_numbers<std::int64_t>(n, integer_type(offsets_section), offsets_section);
@@ -254,10 +207,10 @@ class LegacyVtkParser {
                          std::to_string(cells.offsets[c]) + "; they must rise from 0 to " +
                          std::to_string(size));
             }
-            const std::string_view keyword = token("CONNECTIVITY");
-            if (!is_keyword(keyword, "connectivity"))
+            const std::string_view keyword = in_.token("CONNECTIVITY");
+            if (!io::is_keyword(keyword, "connectivity"))
                 fail(section + ": expected CONNECTIVITY after the offsets, found " +
-                     quoted(keyword));
+                     io::quoted_bytes(keyword));
             const std::string connectivity_section = section + " CONNECTIVITY";
             cells.connectivity = read_numbers<std::int64_t>(
                 size, integer_type(connectivity_section), connectivity_section);
@@ -326,18 +279,18 @@ class LegacyVtkParser {
     /// FIELD NAME COUNT, then per array NAME COMPONENTS TUPLES TYPE and its values (or
     /// NULL_ARRAY), each optionally followed by METADATA: read and dropped.
     void skip_field() {
-        token("the FIELD's name");
+        in_.token("the FIELD's name");
         const long long arrays = count("FIELD", "array count");
         for (long long a = 0; a < arrays; ++a) {
-            const std::string_view name = token("a FIELD array");
-            if (is_keyword(name, "null_array")) continue;
-            const std::string section = "FIELD array " + quoted(name);
+            const std::string_view name = in_.token("a FIELD array");
+            if (io::is_keyword(name, "null_array")) continue;
+            const std::string section = "FIELD array " + io::quoted_bytes(name);
             const long long components = count(section, "component count");
             const long long tuples = count(section, "tuple count");
             const ValueType& type = value_type(section);
             read_numbers<double>(components * tuples, type, section);
-            if (is_keyword(peek_token(), "metadata")) {
-                next_token();
+            if (io::is_keyword(in_.peek_token(), "metadata")) {
+                in_.next_token();
                 skip_metadata();
             }
         }
@@ -345,10 +298,10 @@ class LegacyVtkParser {
 
     /// METADATA's lines, up to a blank line (or the end of the file).
     void skip_metadata() {
-        skip_rest_of_line();
-        while (position_ < bytes_.size()) {
-            const std::string_view line = line_at(position_);
-            skip_rest_of_line();
+        in_.skip_line();
+        while (in_.remaining() > 0) {
+            const std::string_view line = in_.rest_of_line();
+            in_.skip_line();
             if (line.find_first_not_of(" \t\r\f\v") == std::string_view::npos) break;
         }
     }
@@ -357,184 +310,83 @@ class LegacyVtkParser {
     /// header line), as T.
     template <class T>
     std::vector<T> read_numbers(long long n, const ValueType& type, const std::string& section) {
+        // In a BINARY file the values start on the line after the section's header.
+        if (in_.binary() && in_.position() > 0 && in_.bytes()[in_.position() - 1] != '\n')
+            in_.skip_line();
         // Refused before allocating: a count the rest of the file cannot hold (an ASCII number
         // takes a character and a separator).
-        const std::size_t left = bytes_.size() - position_;
-        if (n < 0 || static_cast<unsigned long long>(n) >
-                         (binary_ ? left / static_cast<std::size_t>(type.bytes) : left / 2 + 1))
+        const std::size_t left = in_.remaining();
+        const std::size_t room =
+            in_.binary() ? left / static_cast<std::size_t>(type.binary.bytes) : left / 2 + 1;
+        if (n < 0 || static_cast<unsigned long long>(n) > room)
             fail(section + " is cut short (" + std::to_string(n) + " numbers declared, " +
                  std::to_string(left) + " bytes left in the file)");
         std::vector<T> values(static_cast<std::size_t>(n));
-        if (binary_) {
-            skip_rest_of_line_if_at_header();
-            if (static_cast<unsigned long long>(n) >
-                (bytes_.size() - position_) / static_cast<std::size_t>(type.bytes))
-                fail(section + " is cut short (" + std::to_string(n) + " numbers declared)");
-            for (T& value : values) value = binary_value<T>(type, section);
-            return values;
-        }
         for (long long i = 0; i < n; ++i) {
-            const std::string_view text = next_token();
+            T& value = values[static_cast<std::size_t>(i)];
+            if (in_.binary()) {
+                if constexpr (std::is_floating_point_v<T>)
+                    value = in_.binary_double(type.binary, true);
+                else
+                    value = in_.binary_integer(type.binary, true, section);
+                continue;
+            }
+            const std::string_view text = in_.next_token();
             if (text.empty())
                 fail(section + " is cut short: the file ends after " + std::to_string(i) + " of " +
                      std::to_string(n) + " numbers");
-            values[static_cast<std::size_t>(i)] = ascii_value<T>(text, type, section);
+            if constexpr (std::is_floating_point_v<T>)
+                value = in_.to_double(text, section);
+            else
+                value = in_.to_integer(text, section);
         }
         return values;
     }
 
-    template <class T>
-    T ascii_value(std::string_view text, const ValueType& type, const std::string& section) {
-        const char* end = text.data() + text.size();
-        if (type.floating || std::is_floating_point_v<T>) {
-            double value = 0;
-            const auto [stop, error] = std::from_chars(text.data(), end, value);
-            if (error != std::errc() || stop != end)
-                fail(section + " holds " + quoted(text) + " where a number belongs");
-            if constexpr (std::is_floating_point_v<T>) {
-                return value;
-            } else {
-                fail(section + " holds " + quoted(text) + " where a whole number belongs");
-            }
-        } else {
-            long long value = 0;
-            const char* begin = text.data() + (text[0] == '+' ? 1 : 0);
-            const auto [stop, error] = std::from_chars(begin, end, value);
-            if (error != std::errc() || stop != end)
-                fail(section + " holds " + quoted(text) + " where a whole number belongs");
-            return static_cast<T>(value);
-        }
-    }
-
-    template <class T>
-    T binary_value(const ValueType& type, const std::string& section) {
-        std::uint64_t bits = 0;
-        for (int b = 0; b < type.bytes; ++b)
-            bits = bits << 8 | static_cast<unsigned char>(bytes_[position_++]);
-        if (type.floating) {
-            double value;
-            if (type.bytes == 4) {
-                float f;
-                const auto narrow = static_cast<std::uint32_t>(bits);
-                std::memcpy(&f, &narrow, 4);
-                value = f;
-            } else {
-                std::memcpy(&value, &bits, 8);
-            }
-            if constexpr (std::is_floating_point_v<T>) return value;
-            fail(section + " holds floating-point values where whole numbers belong");
-        }
-        const int shift = 64 - 8 * type.bytes;
-        std::int64_t value;
-        if (type.is_signed) {
-            value = static_cast<std::int64_t>(bits << shift) >> shift;  // sign-extended
-        } else {
-            if (bits > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
-                fail(section + " holds a value out of range");
-            value = static_cast<std::int64_t>(bits);
-        }
-        return static_cast<T>(value);
-    }
-
     /// A count after a section's keyword: a whole number in [0, kMaxCount].
     long long count(const std::string& section, const char* what) {
-        const std::string_view text = token(section + "'s " + what);
+        const std::string_view text = in_.token(section + "'s " + what);
+        const std::string expected = section + ": expected its " + what +
+                                     " (a whole number from 0 to " + std::to_string(kMaxCount) +
+                                     "), found " + io::quoted_bytes(text);
         long long value = -1;
-        const auto [stop, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-        if (error != std::errc() || stop != text.data() + text.size() || value < 0 ||
-            value > kMaxCount)
-            fail(section + ": expected its " + what + " (a whole number from 0 to " +
-                 std::to_string(kMaxCount) + "), found " + quoted(text));
+        try {
+            value = in_.to_integer(text, section);
+        } catch (const InputError&) {
+            fail(expected);
+        }
+        if (value < 0 || value > kMaxCount) fail(expected);
         return value;
     }
 
     const ValueType& value_type(const std::string& section) {
-        const std::string_view text = token(section + "'s value type");
+        const std::string_view text = in_.token(section + "'s value type");
         for (const ValueType& type : kValueTypes) {
-            if (is_keyword(text, type.name)) return type;
+            if (io::is_keyword(text, type.name)) return type;
         }
-        fail(section + ": value type " + quoted(text) +
+        fail(section + ": value type " + io::quoted_bytes(text) +
              " is not read (numeric types only: char ... double, vtktypeint64, vtkidtype)");
     }
 
     const ValueType& integer_type(const std::string& section) {
         const ValueType& type = value_type(section);
-        if (type.floating) fail(section + ": value type " + type.name + " where integers belong");
+        if (type.binary.floating)
+            fail(section + ": value type " + type.name + " where integers belong");
         return type;
     }
 
     /// Whether the cell section's version-5 OFFSETS keyword comes next (in a BINARY file, at the
     /// start of the line after the section's header).
     bool next_is_offsets() {
-        if (!binary_) return is_keyword(peek_token(), "offsets");
-        const std::string_view rest = std::string_view(bytes_).substr(position_);
-        return rest.size() > 7 && is_keyword(rest.substr(0, 7), "offsets") && is_space(rest[7]);
+        if (!in_.binary()) return io::is_keyword(in_.peek_token(), "offsets");
+        const std::string_view rest = in_.bytes().substr(in_.position());
+        return rest.size() > 7 && io::is_keyword(rest.substr(0, 7), "offsets") &&
+               (rest[7] == ' ' || rest[7] == '\t');
     }
 
-    /// In a BINARY file, a section's values start on the line after its header: skips what is
-    /// left of the header's line unless already at a line start.
-    void skip_rest_of_line_if_at_header() {
-        if (position_ > 0 && bytes_[position_ - 1] != '\n') skip_rest_of_line();
-    }
+    [[noreturn]] void fail(const std::string& what) const { in_.fail(what); }
 
-    /// The next token (a run of non-whitespace bytes), "" at the end of the file (the line then
-    /// stays the last one with a token, for messages).
-    std::string_view next_token() {
-        const int line = line_;
-        while (position_ < bytes_.size() && is_space(bytes_[position_])) {
-            if (bytes_[position_] == '\n') ++line_;
-            ++position_;
-        }
-        if (position_ == bytes_.size()) line_ = line;
-        const std::size_t begin = position_;
-        while (position_ < bytes_.size() && !is_space(bytes_[position_])) ++position_;
-        return std::string_view(bytes_).substr(begin, position_ - begin);
-    }
-
-    std::string_view peek_token() {
-        const std::size_t position = position_;
-        const int line = line_;
-        const std::string_view token = next_token();
-        position_ = position;
-        line_ = line;
-        return token;
-    }
-
-    /// The next token; fails when the file ends where `what` belongs.
-    std::string_view token(const std::string& what) {
-        const std::string_view token = next_token();
-        if (token.empty()) fail("the file ends where " + what + " belongs");
-        return token;
-    }
-
-    std::string_view line_at(std::size_t position) const {
-        const std::size_t end = std::min(bytes_.find('\n', position), bytes_.size());
-        return std::string_view(bytes_).substr(position, end - position);
-    }
-
-    void skip_rest_of_line() {
-        const std::size_t end = bytes_.find('\n', position_);
-        position_ = end == std::string::npos ? bytes_.size() : end + 1;
-        if (end != std::string::npos) ++line_;
-    }
-
-    static std::string upper(std::string_view token) {
-        std::string text(token.substr(0, 40));
-        for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-        return text;
-    }
-
-    /// Throws `PATH:LINE: what` (ASCII, or a BINARY file's header) or `PATH: byte N: what`.
-    [[noreturn]] void fail(const std::string& what) const {
-        if (binary_) throw InputError(path_ + ": byte " + std::to_string(position_) + ": " + what);
-        throw InputError(path_ + ":" + std::to_string(line_) + ": " + what);
-    }
-
-    std::string path_;
-    std::string bytes_;
-    std::size_t position_ = 0;
-    int line_ = 1;
-    bool binary_ = false;
+    io::ByteCursor in_;
     bool polydata_ = false;
 };
 

@@ -21,6 +21,7 @@ set(SA_GEOMETRY_IO_SOURCES
 # sa_geometry and the plugins.
 set(SA_FILE_SUPPORT_SOURCES
     io/atomic_file.cpp
+    io/byte_cursor.cpp
     io/text_reader.cpp
     io/vtk_cells.cpp
     io/write_checks.cpp
