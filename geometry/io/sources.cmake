@@ -11,6 +11,7 @@ set(SA_GEOMETRY_IO_SOURCES
     io/off_io.cpp
     io/openmesh_io.cpp
     io/plugin_library.cpp
+    io/ply_reader.cpp
     io/polycube_labels_io.cpp
     io/problem_io.cpp
     io/rawfield_io.cpp

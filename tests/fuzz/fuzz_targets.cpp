@@ -21,6 +21,7 @@
 #include "geometry/io/obj_io.h"
 #include "geometry/io/off_io.h"
 #include "geometry/io/openmesh_io.h"
+#include "geometry/io/ply_io.h"
 #include "geometry/io/polycube_labels_io.h"
 #include "geometry/io/problem_io.h"
 #include "geometry/io/rawfield_io.h"
