@@ -147,9 +147,10 @@ class PlyParser {
                 if (elements_.empty()) fail("a PLY property before any element");
                 const bool list = words.size() == 5 && words[1] == "list";
                 const PlyType* size = list ? ply_type(words[2]) : nullptr;
-                const PlyType* type = ply_type(words[list ? 3 : 1]);
-                if ((list ? size == nullptr || size->binary.floating : words.size() != 3) ||
-                    type == nullptr)
+                const PlyType* type = list                ? ply_type(words[3])
+                                      : words.size() == 3 ? ply_type(words[1])
+                                                          : nullptr;
+                if (type == nullptr || (list && (size == nullptr || size->binary.floating)))
                     fail(
                         "expected 'property TYPE NAME' or 'property list TYPE TYPE NAME' with "
                         "PLY types (char, uchar, ..., float, double; a list's length a whole "

@@ -134,6 +134,8 @@ TEST(PlyIo, MalformedFilesAreNamedWithTheirLineAndNothingIsPrinted) {
          "4: a second PLY element 'vertex'"},
         {"ply\nformat ascii 1.0\nelement vertex 1\nproperty list float int x\nend_header\n",
          "4: expected 'property TYPE NAME' or 'property list TYPE TYPE NAME'"},
+        {"ply\nformat ascii 1.0\nelement vertex 1\nproperty\nend_header\n",  // fuzz_ply_stl
+         "4: expected 'property TYPE NAME' or 'property list TYPE TYPE NAME'"},
         {"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n0\n",
          "3: the vertex element has no property y"},
         {header +
