@@ -90,8 +90,10 @@ TEST(DeformSolve, AFoldedStartIsRepaired) {
     ASSERT_GT(map_quality<3>(linear_parts<3>(bar.mesh, frames, start), frames.volume).inverted, 0);
 
     const DeformOptions options;
+    OptimalBoundOptions one_round;
+    one_round.rounds = 1;
     const OptimalBound r = optimal_bound(deform_problem(bar.mesh, ht, start, options),
-                                         deform_solver_options(options), {.rounds = 1});
+                                         deform_solver_options(options), one_round);
     ASSERT_TRUE(r.verified) << r.solve.message;
     EXPECT_EQ(r.solve.final_quality.inverted, 0);
     EXPECT_LE(r.solve.verification.handle_error, r.solve.verification.handle_tolerance);
