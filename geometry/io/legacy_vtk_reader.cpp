@@ -21,6 +21,8 @@
 //   METADATA, then lines up to a blank one
 // Keywords are case-insensitive. BINARY data is big-endian and starts after the line of its
 // section's header; the classic cell layout and CELL_TYPES are 4-byte integers there.
+#include "geometry/io/vtk_io.h"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -32,7 +34,6 @@
 
 #include "geometry/io/byte_cursor.h"
 #include "geometry/io/vtk_cells.h"
-#include "geometry/io/vtk_io.h"
 #include "optim/errors.h"
 
 namespace sa {

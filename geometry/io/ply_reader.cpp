@@ -10,6 +10,8 @@
 // then, element by element in header order, COUNT rows of the element's properties (a list: its
 // length, then that many items). Types: char/int8, uchar/uint8, short/int16, ushort/uint16,
 // int/int32, uint/uint32, float/float32, double/float64.
+#include "geometry/io/ply_io.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <optional>
@@ -18,7 +20,6 @@
 #include <vector>
 
 #include "geometry/io/byte_cursor.h"
-#include "geometry/io/ply_io.h"
 #include "optim/errors.h"
 
 namespace sa {
