@@ -24,14 +24,20 @@ bool same_keyword(std::string_view a, std::string_view b) {
 }
 
 // Sections skipped by their number of values per row.
-constexpr std::array<std::pair<std::string_view, int>, 11> kSkipped{{
+constexpr std::array<std::pair<std::string_view, int>, 17> kSkipped{{
     {"Edges", 3},
     {"Corners", 1},
     {"RequiredVertices", 1},
     {"Ridges", 1},
     {"RequiredEdges", 1},
+    {"RequiredTriangles", 1},
+    {"RequiredQuadrilaterals", 1},
+    {"RequiredTetrahedra", 1},
+    {"RequiredHexahedra", 1},
     {"Quadrilaterals", 5},
     {"Hexahedra", 9},
+    {"Prisms", 7},
+    {"Pyramids", 6},
     {"Normals", 3},
     {"Tangents", 3},
     {"NormalAtVertices", 2},
@@ -79,7 +85,8 @@ class MeditReader {
                     reader_.fail("unknown keyword " + io::quote(keyword));
                 const int count = skip(skipped->first, skipped->second);
                 if (count > 0 &&
-                    (skipped->first == "Quadrilaterals" || skipped->first == "Hexahedra"))
+                    (skipped->first == "Quadrilaterals" || skipped->first == "Hexahedra" ||
+                     skipped->first == "Prisms" || skipped->first == "Pyramids"))
                     result.warnings.push_back(reader_.path() + ": skipped " +
                                               std::to_string(count) + " " +
                                               std::string(skipped->first));

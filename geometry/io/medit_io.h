@@ -5,8 +5,11 @@
 // lines), `MeshVersionFormatted n`, `Dimension 2|3`, `Vertices n` then n rows `x y [z] ref`,
 // `Triangles n` then n rows `a b c ref`, `Tetrahedra n` then n rows `a b c d ref` (1-based), and
 // an optional `End`. Each row is on its own line. These sections are skipped by their row sizes:
-// Edges (3), Corners (1), RequiredVertices (1), Ridges (1), RequiredEdges (1), Quadrilaterals (5),
-// Hexahedra (9), Normals (3), Tangents (3), NormalAtVertices (2), TangentAtVertices (2).
+// Edges (3), Corners (1), RequiredVertices (1), Ridges (1), RequiredEdges, RequiredTriangles,
+// RequiredQuadrilaterals, RequiredTetrahedra, RequiredHexahedra (1 each), Quadrilaterals (5),
+// Hexahedra (9), Prisms (7), Pyramids (6), Normals (3), Tangents (3), NormalAtVertices (2),
+// TangentAtVertices (2); skipped quadrilaterals, hexahedra, prisms and pyramids are counted in a
+// warning.
 // Keywords are case-insensitive; `#` starts a comment.
 
 #include <Eigen/Core>

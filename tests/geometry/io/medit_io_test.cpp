@@ -34,6 +34,8 @@ TEST(MeditIo, TetrahedraWinOverTrianglesAndKnownSectionsAreSkipped) {
                                                         "Tetrahedra\r\n2\r\n"
                                                         "1 2 3 4 0\r\n2 3 4 5 1\r\n"
                                                         "NormalAtVertices\r\n1\r\n1 1\r\n"
+                                                        "RequiredTetrahedra\r\n1\r\n2\r\n"
+                                                        "Pyramids\r\n1\r\n1 2 3 4 5 0\r\n"
                                                         "End\r\n"
                                                         "anything after End is ignored\r\n");
     const MeshFile file = read_medit(path);
@@ -43,7 +45,8 @@ TEST(MeditIo, TetrahedraWinOverTrianglesAndKnownSectionsAreSkipped) {
     Eigen::MatrixXi expected(2, 4);
     expected << 0, 1, 2, 3, 1, 2, 3, 4;
     EXPECT_EQ(file.mesh.simplices, expected);
-    EXPECT_TRUE(file.warnings.empty());
+    ASSERT_EQ(file.warnings.size(), 1u);  // the pyramid is not a simplex
+    EXPECT_NE(file.warnings[0].find("skipped 1 Pyramids"), std::string::npos) << file.warnings[0];
 }
 
 TEST(MeditIo, TrianglesWhenNoTetrahedraAndTwoDimensions) {
@@ -95,8 +98,8 @@ TEST(MeditIo, MalformedFilesNameTheFileAndLine) {
     const std::string v =
         "MeshVersionFormatted 1\nDimension 3\nVertices\n3\n0 0 0 0\n1 0 0 0\n"
         "0 1 0 0\n";  // lines 1-7
-    EXPECT_TRUE(throws_input_error(read("keyword.mesh", v + "Prisms\n0\n"),
-                                   {"keyword.mesh:8:", "unknown keyword 'Prisms'"}));
+    EXPECT_TRUE(throws_input_error(read("keyword.mesh", v + "Octahedra\n0\n"),
+                                   {"keyword.mesh:8:", "unknown keyword 'Octahedra'"}));
     EXPECT_TRUE(throws_input_error(read("number.mesh", v + "Triangles\n1\n1 2 x 0\n"),
                                    {"number.mesh:10:", "'x'"}));
     EXPECT_TRUE(throws_input_error(read("row.mesh", v + "Triangles\n1\n1 2 3\n"),
