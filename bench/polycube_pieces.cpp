@@ -61,7 +61,8 @@ int main(int argc, char** argv) {
         j["squashed"] = {{"tets", s.tets},
                          {"interior_edges", s.interior_edges},
                          {"boundary_edges", s.boundary_edges},
-                         {"boundary_triangles", s.boundary_triangles}};
+                         {"boundary_triangles", s.boundary_triangles},
+                         {"flattened_tets", s.flattened_tets}};
         j["splits"] = {{"edge", p.splits.edge_splits},
                        {"face", p.splits.face_splits},
                        {"tets_after", p.mesh.num_simplices()}};

@@ -1,6 +1,7 @@
 #include "geometry/polycube_label_cleanup.h"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 
 #include "optim/errors.h"
@@ -54,6 +55,34 @@ int merge_label(const PolycubeCharts& charts, int c, const Eigen::MatrixXd& area
     return best;
 }
 
+/// One pass of the teeth rule (polycube_label_cleanup.h) over the boundary triangles in order;
+/// returns how many it relabelled.
+Index remove_teeth(const TetBoundary& boundary, const Eigen::MatrixXd& area_vectors,
+                   std::vector<int>& labels) {
+    Index changed = 0;
+    for (Index b = 0; b < boundary.size(); ++b) {
+        std::array<int, 3> around{-1, -1, -1};
+        for (int i = 0; i < 3; ++i) {
+            const Index n = boundary.adjacent[b][i];
+            if (n >= 0) around[i] = labels[n];
+        }
+        for (int i = 0; i < 3; ++i) {
+            const int candidate = around[i];
+            if (candidate < 0 || candidate == labels[b]) continue;
+            const int count = int(std::count(around.begin(), around.end(), candidate));
+            const bool opposite =
+                std::find(around.begin(), around.end(), candidate ^ 1) != around.end();
+            if (count >= 2 && !opposite &&
+                area_vectors.row(b).dot(label_direction(candidate).transpose()) > 0.0) {
+                labels[b] = candidate;
+                ++changed;
+                break;
+            }
+        }
+    }
+    return changed;
+}
+
 }  // namespace
 
 LabelCleanupReport clean_polycube_labels(const TetBoundary& boundary,
@@ -94,6 +123,14 @@ LabelCleanupReport clean_polycube_labels(const TetBoundary& boundary,
             if (reason == Reason::kSmall) ++report.merged_small;
             if (reason == Reason::kFewNeighbours) ++report.merged_few_neighbours;
             if (reason == Reason::kOpposite) ++report.merged_opposite;
+        }
+        if (merged == 0 && options.remove_teeth && report.rounds < options.max_rounds) {
+            const Index teeth = remove_teeth(boundary, area_vectors, labels);
+            report.teeth += teeth;
+            if (teeth > 0) {
+                ++report.rounds;
+                continue;
+            }
         }
         if (merged == 0) {
             bool clean = true;

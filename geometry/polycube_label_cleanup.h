@@ -7,6 +7,11 @@
 //     polygon: at least four sides, each along another face) is merged into a neighbour;
 //   - of two adjacent charts with opposite labels of one axis (+X beside -X: their planes would
 //     meet at a dihedral angle of 0 or 2 pi), the smaller is merged into a neighbour.
+//   - a tooth, a boundary triangle with two of its three neighbours in one other label, takes
+//     that label (unless the opposite label of its axis is beside it, or its normal points away
+//     from the label's direction): left alone, a chart boundary that zigzags across a PolyCube
+//     edge turns by a right angle at every tooth, and the tetrahedra on the edge there must
+//     turn with it (on robustPolycube/M1_tet the untangling on the planes flattened them).
 // Merging gives every triangle of the chart the label of one of its neighbour charts: the one
 // whose direction best fits the chart's area-weighted normals, preferring labels that create no
 // new opposite pair. Each merge removes at least one chart, so the clean-up ends; charts are
@@ -24,6 +29,7 @@ struct LabelCleanupOptions {
     int min_triangles = 2;
     double min_area_fraction = 1e-3;  ///< ... or with less of the total boundary area
     int min_neighbours = 4;
+    bool remove_teeth = true;
     int max_rounds = 10000;
 };
 
@@ -33,6 +39,7 @@ struct LabelCleanupReport {
     int merged_small = 0;           ///< charts merged for their size
     int merged_few_neighbours = 0;  ///< ... for having fewer than min_neighbours neighbours
     int merged_opposite = 0;        ///< ... for touching the opposite label of their axis
+    Index teeth = 0;                ///< teeth relabelled (a triangle may count more than once)
     Index triangles_changed = 0;    ///< boundary triangles whose label changed
     int rounds = 0;
     bool clean = false;  ///< no chart left that breaks a rule

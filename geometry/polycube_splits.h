@@ -6,7 +6,12 @@
 //     around it, which are on one side of the plane only, are flattened along it;
 //   - a boundary edge whose two ends lie on a chart that does not contain it, and a boundary
 //     triangle whose three vertices lie on another chart than its own, are squeezed to a point
-//     or a segment (the intersection of two or three planes).
+//     or a segment (the intersection of two or three planes);
+//   - any other tetrahedron whose vertices the planes hold so that it is flat for every position
+//     of the planes and of the free coordinates (two vertices on each of two parallel lines where
+//     two planes meet, three on one such line, ...): tested exactly, by its determinant at
+//     random integer samples. Its split is the first of its facets (at the centroid) or interior
+//     edges (at the midpoint) after which no child is flat.
 // Each is split so that the offending element gets a vertex that is not on that chart: interior
 // and boundary edges at their midpoints (every tetrahedron around the edge in two), boundary
 // triangles and, for a tetrahedron, one of its interior facets at their centroids (the one or two
@@ -29,7 +34,13 @@ struct SquashedElements {
     Index interior_edges = 0;      ///< interior edges with both ends on one chart
     Index boundary_edges = 0;      ///< boundary edges with both ends on a chart not containing them
     Index boundary_triangles = 0;  ///< boundary triangles with their vertices on another chart
-    Index total() const { return tets + interior_edges + boundary_edges + boundary_triangles; }
+    /// Other tetrahedra that the planes flatten whatever the solve does (two vertices on each of
+    /// two parallel PolyCube edges, three on one edge, ...; the planes: charts of one axis that
+    /// share a vertex are one plane).
+    Index flattened_tets = 0;
+    Index total() const {
+        return tets + interior_edges + boundary_edges + boundary_triangles + flattened_tets;
+    }
 };
 
 /// Counts the elements above for `facet_labels` (4 #T entries: -1 or 0..5).
@@ -38,9 +49,11 @@ SquashedElements count_squashed_elements(const SimplicialMesh& mesh,
 
 struct PolycubeSplitReport {
     SquashedElements before;
-    SquashedElements after;  ///< all zero on success
-    Index edge_splits = 0;   ///< interior and boundary edges split
-    Index face_splits = 0;   ///< boundary triangles and interior facets split
+    /// All zero on success; flattened tetrahedra that no split repairs stay here (the solve
+    /// then cannot verify).
+    SquashedElements after;
+    Index edge_splits = 0;  ///< interior and boundary edges split
+    Index face_splits = 0;  ///< boundary triangles and interior facets split
     Index vertices_added = 0;
     Index tets_added = 0;
 };

@@ -57,7 +57,7 @@ std::vector<int> read_labels(const SimplicialMesh& mesh, const std::string& sour
          << cleanup.charts_after << " charts, " << cleanup.triangles_changed
          << " triangles relabelled (" << cleanup.merged_small << " small, "
          << cleanup.merged_few_neighbours << " with few neighbours, " << cleanup.merged_opposite
-         << " beside their opposite)";
+         << " beside their opposite; " << cleanup.teeth << " teeth)";
     log_line(logger, line.str());
     if (!cleanup.clean) {
         throw InputError(source + ": the computed labelling could not be cleaned in " +
@@ -105,9 +105,15 @@ PreparedPolycube prepare_polycube(const SimplicialMesh& mesh, const std::string&
                          " charts; squashed: " + std::to_string(before.tets) + " tetrahedra, " +
                          std::to_string(before.interior_edges) + " interior edges, " +
                          std::to_string(before.boundary_edges) + " boundary edges, " +
-                         std::to_string(before.boundary_triangles) + " boundary triangles; " +
+                         std::to_string(before.boundary_triangles) + " boundary triangles, " +
+                         std::to_string(before.flattened_tets) +
+                         " other tetrahedra flat on the planes; " +
                          std::to_string(p.splits.edge_splits) + " edge and " +
-                         std::to_string(p.splits.face_splits) + " face splits");
+                         std::to_string(p.splits.face_splits) + " face splits" +
+                         (p.splits.after.total() > 0
+                              ? "; " + std::to_string(p.splits.after.flattened_tets) +
+                                    " tetrahedra flat on the planes remain (no split repairs them)"
+                              : std::string()));
     return p;
 }
 

@@ -17,7 +17,8 @@ nlohmann::json squashed_json(const SquashedElements& s) {
     return {{"tets", s.tets},
             {"interior_edges", s.interior_edges},
             {"boundary_edges", s.boundary_edges},
-            {"boundary_triangles", s.boundary_triangles}};
+            {"boundary_triangles", s.boundary_triangles},
+            {"flattened_tets", s.flattened_tets}};
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <set>
 
@@ -122,6 +123,44 @@ TEST(PolycubeLabelCleanup, ACleanLabellingIsLeftAlone) {
     EXPECT_EQ(report.rounds, 0);
     EXPECT_EQ(report.triangles_changed, 0);
     EXPECT_EQ(labels, truth);
+}
+
+// Teeth along a PolyCube edge: on a box, the +X triangles with an edge on the vertical edge x = y =
+// 1 are labelled +Y in every other cell, so that the boundary between the two charts zigzags off
+// the edge. No chart is small or short of neighbours; the teeth rule takes the triangles back to
+// +X.
+TEST(PolycubeLabelCleanup, TeethAlongAnEdgeAreRemoved) {
+    const SimplicialMesh mesh = voxel_tetrahedra({{0, 0, 0}}, 6);
+    const TetBoundary boundary = tet_boundary(mesh, mesh_topology(mesh, "box"));
+    const std::vector<int> truth = closest_axis_labels(boundary, mesh.vertices);
+    std::vector<int> labels = truth;
+    int teeth = 0;
+    for (Index b = 0; b < boundary.size(); ++b) {
+        int on_edge = 0;
+        double z = 0.0;
+        for (int i = 0; i < 3; ++i) {
+            const Eigen::RowVector3d p = mesh.vertices.row(boundary.triangles(b, i));
+            on_edge += p.x() == 1.0 && p.y() == 1.0;
+            z += p.z() / 3.0;
+        }
+        if (labels[b] == 0 && on_edge == 2 && int(std::floor(6.0 * z)) % 2 == 1) {
+            labels[b] = 2;
+            ++teeth;
+        }
+    }
+    ASSERT_GT(teeth, 2);
+    const std::vector<int> toothed = labels;
+    LabelCleanupOptions off;
+    off.remove_teeth = false;
+    const LabelCleanupReport kept = clean_polycube_labels(boundary, mesh.vertices, labels, off);
+    EXPECT_TRUE(kept.clean);
+    EXPECT_EQ(labels, toothed);
+    const LabelCleanupReport report = clean_polycube_labels(boundary, mesh.vertices, labels);
+    EXPECT_TRUE(report.clean);
+    EXPECT_EQ(labels, truth);
+    EXPECT_EQ(report.triangles_changed, teeth);
+    EXPECT_GE(report.teeth, teeth);
+    EXPECT_EQ(report.charts_after, 6);
 }
 
 }  // namespace

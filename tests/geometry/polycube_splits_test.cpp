@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+#include <cmath>
+
 #include "optim/errors.h"
 #include "polycube_fixtures.h"
 
@@ -198,6 +201,65 @@ TEST(PolycubeSplits, ACleanMeshIsUnchanged) {
     EXPECT_EQ(report.vertices_added, 0);
     EXPECT_EQ(split.simplices, mesh.simplices);
     EXPECT_EQ(flags, before);
+}
+
+// A box [0,2] x [0,1] x [0,1] whose top is twisted by 10 degrees, as two triangular prisms
+// over the halves of its bottom, A B C and A C D (A = (0,0), C = (2,1)), that split their shared
+// diagonal face differently (A0-C1 and A1-C0): the sliver tetrahedron (A0, A1, C0, C1) between
+// them has positive rest volume, but its vertices lie on two parallel PolyCube edges (the
+// corners -X-Y and +X+Y): every map with planar charts flattens it. A face split cannot help
+// (two of its children hold A0, A1 and one vertex of C, or the reverse, and have opposite
+// volumes wherever the new vertex is); the split of the right diagonal can.
+SimplicialMesh twisted_box() {
+    SimplicialMesh mesh;
+    mesh.vertices.resize(8, 3);
+    const std::array<Eigen::Vector2d, 4> corners = {Eigen::Vector2d(0, 0), Eigen::Vector2d(2, 0),
+                                                    Eigen::Vector2d(2, 1), Eigen::Vector2d(0, 1)};
+    const double angle = 10.0 * M_PI / 180.0;
+    const Eigen::Vector2d centre(1.0, 0.5);
+    const Eigen::Matrix2d turn = Eigen::Rotation2Dd(angle).toRotationMatrix();
+    for (int k = 0; k < 4; ++k) {
+        mesh.vertices.row(k) << corners[k].x(), corners[k].y(), 0.0;  // A0 B0 C0 D0
+        const Eigen::Vector2d top = centre + turn * (corners[k] - centre);
+        mesh.vertices.row(4 + k) << top.x(), top.y(), 1.0;  // A1 B1 C1 D1
+    }
+    enum { A0, B0, C0, D0, A1, B1, C1, D1 };
+    mesh.simplices.resize(7, 4);
+    // Prism A B C, its face A-C split by A0-C1.
+    mesh.simplices.row(0) << A0, B0, C0, C1;
+    mesh.simplices.row(1) << A0, B0, C1, B1;
+    mesh.simplices.row(2) << A0, B1, C1, A1;
+    // Prism A C D, its face A-C split by A1-C0.
+    mesh.simplices.row(3) << A0, C0, D0, A1;
+    mesh.simplices.row(4) << C0, D0, A1, C1;
+    mesh.simplices.row(5) << D0, A1, C1, D1;
+    // The sliver between the two diagonals.
+    mesh.simplices.row(6) << A0, A1, C0, C1;
+    return oriented(mesh);
+}
+
+TEST(PolycubeSplits, ATetrahedronOnTwoParallelPolycubeEdgesIsSplitAcross) {
+    const SimplicialMesh mesh = twisted_box();
+    for (Index t = 0; t < mesh.num_simplices(); ++t) ASSERT_GT(volume(mesh, t), 1e-3) << t;
+    std::vector<int> flags = closest_flags(mesh);
+    const SquashedElements squashed = count_squashed_elements(mesh, flags);
+    EXPECT_EQ(squashed.tets, 0);
+    EXPECT_EQ(squashed.interior_edges, 0);
+    EXPECT_EQ(squashed.boundary_edges, 0);
+    EXPECT_EQ(squashed.boundary_triangles, 0);
+    EXPECT_EQ(squashed.flattened_tets, 1);
+    SimplicialMesh split = mesh;
+    const PolycubeSplitReport report = split_squashed_elements(split, flags, "twisted");
+    EXPECT_EQ(report.before.flattened_tets, 1);
+    EXPECT_EQ(report.face_splits, 0);
+    EXPECT_EQ(report.edge_splits, 1);
+    expect_split_well(mesh, split, flags, report);
+    // The new vertex is the midpoint of one of the two diagonals A0-C1 and A1-C0.
+    ASSERT_EQ(split.num_vertices(), 9);
+    const Eigen::RowVector3d m = split.vertices.row(8);
+    const double to_a0c1 = (m - 0.5 * (mesh.vertices.row(0) + mesh.vertices.row(6))).norm();
+    const double to_a1c0 = (m - 0.5 * (mesh.vertices.row(4) + mesh.vertices.row(2))).norm();
+    EXPECT_LT(std::min(to_a0c1, to_a1c0), 1e-12);
 }
 
 }  // namespace
