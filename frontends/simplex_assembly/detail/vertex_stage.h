@@ -11,12 +11,26 @@
 // adapter that evaluates them at A = X E^-1, E_theta in its vertex form, and the problem's own
 // linear constraints as its only assembly terms: with constraints the engine's schedule keeps
 // them (as in the assembly), without them it is plain projected Newton.
+//
+// E_C's exponent continuation. A valid start can still be far from optimal: an untangled map
+// (untangle.h) of a fixed-boundary problem with a large tangled region has simplices with
+// s d ~ 150 next to perfect ones, so the per-simplex Hessians span e^150 and no regularization
+// makes their sum factorizable ("factorization failed" at the first step: the untangled map was
+// returned as it was). With an ExponentContinuation (the built-in E_C) the stage runs rounds at
+// s_r = min(s, kExponentRange / d_max), d_max the largest barrier distortion of a simplex with a
+// free vertex at the round's start, each to convergence, raising s_r as d_max falls until s_r = s
+// (vertex_descent.h does the same for a Tutte start); a round that lowers d_max by less than 1%
+// ends the continuation, and a last round at s follows. The rounds share the stage's iteration
+// and time limits. The result is the iterate with the lowest energy at the requested s (never
+// worse than the start).
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "frontends/simplex_assembly/detail/assembly_problem.h"
+#include "frontends/simplex_assembly/detail/prepared_problem.h"
 #include "frontends/simplex_assembly/simplex_assembly_options.h"
 #include "frontends/simplex_assembly/simplex_term.h"
 #include "geometry/boundary_fans.h"
@@ -34,6 +48,23 @@ struct VertexStage {
     AssemblyStop stop = AssemblyStop::kConverged;  ///< the engine's reason, when it ran
 };
 
+/// The per-simplex energies at another exponent s of E_C, for the continuation.
+template <int D>
+struct ExponentContinuation {
+    double s = 1.0;  ///< the exponent asked for
+    /// E_C's distortion d of A (+inf when det A <= 0).
+    std::function<double(const Mat<D>&)> distortion;
+    /// The stage's energies (the same terms on the same simplices) with E_C at exponent s_r;
+    /// empty: no continuation.
+    std::function<std::vector<std::shared_ptr<const SimplexTerm<D>>>(double)> energies;
+};
+
+/// The continuation of `prepared`'s built-in E_C, its energies restricted to `simplices` (every
+/// simplex when empty; as SimplexTerm::restricted). Empty without the built-in energy.
+template <int D>
+ExponentContinuation<D> exponent_continuation(const PreparedProblem<D>& prepared,
+                                              const std::vector<Index>& simplices = {});
+
 /// What the vertex stage minimizes besides the per-simplex energies.
 template <int D>
 struct VertexStageTerms {
@@ -46,6 +77,8 @@ struct VertexStageTerms {
     /// run_vertex_stage).
     std::vector<std::shared_ptr<const AssemblyPlugin<D>>> plugins = {};
     PluginStage<D> plugin_stage = {};
+    /// E_C's exponent continuation (empty: one run at the energies' own exponent).
+    ExponentContinuation<D> exponent = {};
 };
 
 /// `start` #V x D in the driver's normalized coordinates; `fixed` flags handles and anchors;
