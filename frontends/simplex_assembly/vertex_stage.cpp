@@ -183,30 +183,37 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
     const ExponentContinuation<D>& c = terms.exponent;
     if (!c.energies)
         return run_once<D>(mesh, frames, energies, start, fixed, options, logger, terms);
-    // The largest barrier distortion of a simplex with a free vertex (the others are constant).
+    // The smallest and largest barrier distortion of a simplex with a free vertex (the others
+    // are constant): the per-simplex Hessians span about e^{s (largest - smallest)}.
     std::vector<Index> moving;
     for (Index s = 0; s < mesh.num_simplices(); ++s) {
         bool moves = false;
         for (int k = 0; k <= D; ++k) moves |= !fixed[mesh.simplices(s, k)];
         if (moves) moving.push_back(s);
     }
-    auto largest_distortion = [&](const Eigen::MatrixXd& x) {
-        double largest = 0.0;
+    struct Range {
+        double smallest = kInfinity, largest = 0.0;
+        double spread() const { return largest - smallest; }
+    };
+    auto distortion_range = [&](const Eigen::MatrixXd& x) {
+        Range r;
         for (Index s : moving) {
             Eigen::Matrix<double, D, D + 1> corners;
             for (int k = 0; k <= D; ++k)
                 corners.col(k) = x.row(mesh.simplices(s, k)).leftCols(D).transpose();
-            largest = std::max(largest, c.distortion(linear_part<D>(frames, s, corners)));
+            const double d = c.distortion(linear_part<D>(frames, s, corners));
+            r.smallest = std::min(r.smallest, d);
+            r.largest = std::max(r.largest, d);
         }
-        return largest;
+        return r;
     };
-    double d = largest_distortion(start);
+    Range d = distortion_range(start);
     // Within the range a factorization handles: one run. So too when a simplex is beyond the
     // barrier's exponent cap at s or the start is not valid (run_once skips them and says why):
     // a simplex with a free vertex stays beyond the cap only where the handles force it
     // (untangle_prepared() stops below it otherwise; tlc/armadillo-598), and no exponent makes
     // the barrier lower such a simplex.
-    if (!(c.s * d > kExponentRange) || !(c.s * d <= kBarrierExponentCap))
+    if (!(c.s * d.spread() > kExponentRange) || !(c.s * d.largest <= kBarrierExponentCap))
         return run_once<D>(mesh, frames, energies, start, fixed, options, logger, terms);
 
     // The energy asked for, on the whole mesh: what the best iterate is judged by.
@@ -221,19 +228,19 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
     result.positions = start;
     double best = energy_at_s(start);
     Eigen::MatrixXd x = start;
-    const double d_start = d;
+    const double d_start = d.largest;
     double s_first = -1.0, s_last = -1.0;
     int rounds = 0;
     bool last_round = false, improved = false;
     // The rounds share the stage's iteration limit.
     int steps = 0;
     while (!budget.exhausted() && steps < options.max_iterations) {
-        const double s = last_round ? c.s : std::min(c.s, kExponentRange / d);
+        const double s = last_round ? c.s : std::min(c.s, kExponentRange / d.spread());
         char line[160];
         std::snprintf(line, sizeof line,
                       "vertex stage: exponent continuation round %d, s = %.4g (asked %.4g), "
-                      "largest distortion %.4g",
-                      rounds, s, c.s, d);
+                      "distortion %.4g to %.4g",
+                      rounds, s, c.s, d.smallest, d.largest);
         log_line(logger, line);
         SimplexAssemblyOptions o = with_time_left(options, budget);
         o.s = s;
@@ -277,19 +284,23 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
             result.note = v.note;
         }
         if (last_round || !v.ran) break;
-        const double after = largest_distortion(x);
-        const bool stalled = !(after < (1.0 - kStall) * d);
+        const Range after = distortion_range(x);
+        const bool stalled = !(after.spread() < (1.0 - kStall) * d.spread());
         d = after;
         if (s >= c.s) break;
-        // The last round takes the exponent asked for, from wherever the continuation got.
-        if (stalled || rounds + 1 >= kMaxRounds) last_round = true;
+        // The last round takes the exponent asked for, from the best iterate so far (the start
+        // when the largest distortion is one the handles force: then this is the single run).
+        if (stalled || rounds + 1 >= kMaxRounds) {
+            last_round = true;
+            x = result.positions;
+        }
     }
     if (rounds > 0) {
         char line[200];
         std::snprintf(line, sizeof line,
                       " (exponent continuation: %d rounds, s %.3g to %.3g, largest distortion "
                       "%.4g to %.4g)",
-                      rounds, s_first, s_last, d_start, largest_distortion(result.positions));
+                      rounds, s_first, s_last, d_start, distortion_range(result.positions).largest);
         result.note += line;
         if (result.ran && !improved) result.note += "; the start is kept (no lower energy at s)";
     }

@@ -17,12 +17,13 @@
 // s d ~ 150 next to perfect ones, so the per-simplex Hessians span e^150 and no regularization
 // makes their sum factorizable ("factorization failed" at the first step: the untangled map was
 // returned as it was). With an ExponentContinuation (the built-in E_C) the stage runs rounds at
-// s_r = min(s, kExponentRange / d_max), d_max the largest barrier distortion of a simplex with a
-// free vertex at the round's start, each to convergence, raising s_r as d_max falls until s_r = s
-// (vertex_descent.h does the same for a Tutte start); a round that lowers d_max by less than 1%
-// ends the continuation, and a last round at s follows. The rounds share the stage's iteration
-// and time limits. The result is the iterate with the lowest energy at the requested s (never
-// worse than the start).
+// s_r = min(s, kExponentRange / (d_max - d_min)), d_max and d_min the largest and smallest barrier
+// distortion of a simplex with a free vertex at the round's start (the Hessians span about
+// e^{s_r (d_max - d_min)}), each to convergence, raising s_r as the spread falls until s_r = s
+// (vertex_descent.h does the same for a Tutte start); a round that lowers the spread by less than
+// 1% ends the continuation, and a last round at s follows from the best iterate so far. The rounds
+// share the stage's iteration and time limits. The result is the iterate with the lowest energy at
+// the requested s (never worse than the start).
 
 #include <Eigen/Core>
 #include <functional>
