@@ -11,7 +11,6 @@
 namespace sa {
 
 struct OpenMeshFunctions {
-    decltype(&sa::read_ply) read_ply;
     decltype(&sa::read_stl) read_stl;
     decltype(&sa::loop_subdivide) loop_subdivide;
 };

@@ -4,6 +4,7 @@
 #include "geometry/io/obj_io.h"
 #include "geometry/io/off_io.h"
 #include "geometry/io/openmesh_io.h"
+#include "geometry/io/ply_io.h"
 #include "geometry/io/problem_io.h"
 #include "geometry/io/tetgen_io.h"
 #include "geometry/io/text_reader.h"

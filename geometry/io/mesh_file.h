@@ -42,8 +42,8 @@ struct MeshFile {
 /// reading (`FILE: cannot open (Is a directory)` for a folder). Every reader checks this first.
 void check_input_file(const std::string& path);
 
-/// Reads a mesh by its extension (case-insensitive): .obj (obj_io.h), .off (off_io.h), .ply and
-/// .stl (openmesh_io.h), .vtk and .vtu (vtk_io.h), .mesh (medit_io.h), .node and .ele
+/// Reads a mesh by its extension (case-insensitive): .obj (obj_io.h), .off (off_io.h), .ply
+/// (ply_io.h), .stl (openmesh_io.h), .vtk and .vtu (vtk_io.h), .mesh (medit_io.h), .node and .ele
 /// (tetgen_io.h); any other file is read as the plain-text problem format (problem_io.h).
 MeshFile read_mesh_file(const std::string& path);
 

@@ -5,12 +5,6 @@
 
 namespace sa {
 
-MeshFile read_ply(const std::string& path) {
-    return plugin_table<OpenMeshFunctions>("sa_openmesh", "sa_openmesh_functions",
-                                           "reading PLY files")
-        .read_ply(path);
-}
-
 MeshFile read_stl(const std::string& path) {
     return plugin_table<OpenMeshFunctions>("sa_openmesh", "sa_openmesh_functions",
                                            "reading STL files")

@@ -14,10 +14,6 @@ const VtkIoFunctions& vtk_io() {
 
 }  // namespace
 
-MeshFile read_vtk(const std::string& path) {
-    return vtk_io().read_vtk(path);
-}
-
 MeshFile read_vtu(const std::string& path) {
     return vtk_io().read_vtu(path);
 }

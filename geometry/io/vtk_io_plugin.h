@@ -7,8 +7,8 @@
 
 namespace sa {
 
+/// Legacy .vtk files are read without VTK (geometry/io/legacy_vtk_reader.cpp), not through here.
 struct VtkIoFunctions {
-    decltype(&sa::read_vtk) read_vtk;
     decltype(&sa::read_vtu) read_vtu;
     decltype(&sa::write_vtk) write_vtk;
     decltype(&sa::write_vtu) write_vtu;

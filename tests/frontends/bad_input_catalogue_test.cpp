@@ -651,7 +651,7 @@ std::vector<Case> catalogue() {
          },
          "param --mesh {D}/p.ply --out {D}/uv.obj",
          2,
-         {"{D}/p.ply: face 0 with 4 vertices"}},
+         {"{D}/p.ply:14: face 0 with 4 vertices; only triangles"}},
         {"PlyPropertyBeforeElement",
          [](const Inputs& in) {
              in.text("p.ply",

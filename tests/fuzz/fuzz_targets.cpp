@@ -3,10 +3,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <iterator>
 #include <sstream>
 #include <stdexcept>
@@ -19,6 +21,7 @@
 #include "geometry/io/obj_io.h"
 #include "geometry/io/off_io.h"
 #include "geometry/io/openmesh_io.h"
+#include "geometry/io/ply_io.h"
 #include "geometry/io/polycube_labels_io.h"
 #include "geometry/io/problem_io.h"
 #include "geometry/io/rawfield_io.h"
@@ -224,13 +227,28 @@ std::vector<Bytes> seeds_vtk() {
     const SimplicialMesh& t = triangles();
     const SimplicialMesh& tets = tetrahedra();
     const std::vector<DataArray> point_data = {{"u", Eigen::MatrixXd::Ones(t.num_vertices(), 2)}};
+    // A BINARY file in the version 5 layout: big-endian values of `bytes` bytes each.
+    const auto big_endian = [](std::initializer_list<std::uint64_t> values, int bytes) {
+        std::string text;
+        for (const std::uint64_t value : values) {
+            for (int b = bytes - 1; b >= 0; --b) text.push_back(static_cast<char>(value >> 8 * b));
+        }
+        return text;
+    };
+    const std::uint64_t one = 0x3f800000;  // 1.0f
+    const std::string binary_vtk =
+        "# vtk DataFile Version 5.1\nb\nBINARY\nDATASET UNSTRUCTURED_GRID\nPOINTS 3 float\n" +
+        big_endian({0, 0, 0, one, 0, 0, 0, one, 0}, 4) + "\nCELLS 2 3\nOFFSETS vtktypeint64\n" +
+        big_endian({0, 3}, 8) + "\nCONNECTIVITY vtktypeint64\n" + big_endian({0, 1, 2}, 8) +
+        "\nCELL_TYPES 1\n" + big_endian({5}, 4) + "\n";
     return {
         written("a.vtk",
                 [&](const std::string& p) { write_vtk(p, t.vertices, t.simplices, point_data); }),
         written("b.vtk",
                 [&](const std::string& p) { write_vtk(p, tets.vertices, tets.simplices); }),
         bytes("# vtk DataFile Version 3.0\npoly\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n"
-              "0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 1 2\n")};
+              "0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 1 2\n"),
+        bytes(binary_vtk)};
 }
 
 void run_dmat(const std::uint8_t* data, std::size_t size) {
