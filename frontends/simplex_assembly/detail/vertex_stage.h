@@ -20,10 +20,10 @@
 // s_r = min(s, kExponentRange / (d_max - d_min)), d_max and d_min the largest and smallest barrier
 // distortion of a simplex with a free vertex at the round's start (the Hessians span about
 // e^{s_r (d_max - d_min)}), each to convergence, raising s_r as the spread falls until s_r = s
-// (vertex_descent.h does the same for a Tutte start); a round that lowers the spread by less than
-// 1% ends the continuation, and a last round at s follows from the best iterate so far. The rounds
-// share the stage's iteration and time limits. The result is the iterate with the lowest energy at
-// the requested s (never worse than the start).
+// (vertex_descent.h raises s the same way from a Tutte start, on d_max alone); a round that lowers
+// the spread by less than 1% ends the continuation, and a last round at s follows from the best
+// iterate so far. The rounds share the stage's iteration and time limits. The result is the iterate
+// with the lowest energy at the requested s (never worse than the start).
 
 #include <Eigen/Core>
 #include <functional>
@@ -85,7 +85,8 @@ struct VertexStageTerms {
 /// `start` #V x D in the driver's normalized coordinates; `fixed` flags handles and anchors;
 /// `energies` are the per-simplex energies of A, each evaluated at A = X E^-1 of the vertex
 /// positions X (VertexSimplexEnergy: the adapter of v-SA). Simplices whose vertices are all
-/// fixed are left out. Newton runs as the engine's run() says.
+/// fixed are left out. Newton runs as the engine's run() says; with terms.exponent, in the
+/// continuation's rounds when the start's spread of distortions calls for them (above).
 template <int D>
 VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& frames,
                              const std::vector<std::shared_ptr<const SimplexTerm<D>>>& energies,
