@@ -79,7 +79,8 @@ void start_from_initial_map(PreparedProblem<D>& prepared, const SimplexAssemblyO
     VertexStage from_initial = run_vertex_stage<D>(
         prepared.mesh, prepared.frames, in.energies, candidate, fixed,
         with_time_left(options, budget), observer.logger,
-        VertexStageTerms<D>{in.fans, in.constraints, in.plugins, in.plugin_stage});
+        VertexStageTerms<D>{in.fans, in.constraints, in.plugins, in.plugin_stage,
+                            exponent_continuation<D>(prepared)});
     if (from_initial.ran) {
         from_initial.note += " (from the initial map: the assembly's recovered mesh was not valid)";
         recovered = from_initial.positions;
@@ -210,7 +211,8 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
         VertexStage vertex = run_vertex_stage<D>(
             mesh, frames, in.energies, recovered, fixed, with_time_left(options, budget),
             observer.logger,
-            VertexStageTerms<D>{in.fans, in.constraints, in.plugins, in.plugin_stage});
+            VertexStageTerms<D>{in.fans, in.constraints, in.plugins, in.plugin_stage,
+                                exponent_continuation<D>(prepared)});
         if (!vertex.ran)
             start_from_initial_map<D>(prepared, options, budget, observer, fixed, recovered,
                                       vertex);

@@ -378,9 +378,11 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
                             : Index(-1);
             constraints.push_back(c);
         }
-        VertexStage vertex = run_vertex_stage<D>(sub.mesh, frames, energies, start, local_fixed,
-                                                 with_time_left(options, budget), observer.logger,
-                                                 VertexStageTerms<D>{{}, constraints});
+        VertexStage vertex = run_vertex_stage<D>(
+            sub.mesh, frames, energies, start, local_fixed, with_time_left(options, budget),
+            observer.logger,
+            VertexStageTerms<D>{
+                {}, constraints, {}, {}, exponent_continuation<D>(p, sub.simplices)});
         result.vertex_stage_ran = vertex.ran;
         result.vertex_stage_note = vertex.note;
         result.vertex_stage = vertex.newton;

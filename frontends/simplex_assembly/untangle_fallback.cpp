@@ -77,10 +77,10 @@ bool untangle_fallback(PreparedProblem<D>& p, const SimplexAssemblyOptions& opti
     }
     result.times.optimization += watch.lap();
     if (u.untangled && options.vertex_stage && !options.until_valid && !budget.exhausted()) {
-        const VertexStage vertex =
-            run_vertex_stage<D>(p.mesh, p.frames, p.assembly.energies, positions,
-                                fixed_vertices<D>(p), with_time_left(options, budget),
-                                observer.logger, VertexStageTerms<D>{{}, p.assembly.constraints});
+        const VertexStage vertex = run_vertex_stage<D>(
+            p.mesh, p.frames, p.assembly.energies, positions, fixed_vertices<D>(p),
+            with_time_left(options, budget), observer.logger,
+            VertexStageTerms<D>{{}, p.assembly.constraints, {}, {}, exponent_continuation<D>(p)});
         if (vertex.ran) {
             positions = vertex.positions;
             result.vertex_stage_ran = true;
