@@ -263,7 +263,9 @@ PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSol
     SimplexAssemblyObserver observer;
     observer.logger = logger;
     if (options.optimal_bound) {
-        OptimalBoundOptions schedule{options.rounds, 1e-3};
+        OptimalBoundOptions schedule;
+        schedule.rounds = options.rounds;
+        schedule.tolerance = 1e-3;
         // A round counts only when its map is a PolyCube (one cut short by the time limit before
         // the vertex stage is not planar, though the driver finds no inverted tetrahedron).
         schedule.accept = [&prepared](const SimplexAssemblyResult& r) {
