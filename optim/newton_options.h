@@ -45,7 +45,7 @@ struct RegularizationOptions {
 struct NewtonOptions {
     /// Newton steps before stopping with kMaxIterations.
     int max_iterations = 200;
-    /// Wall-clock limit in seconds, checked after every iteration.
+    /// Wall-clock limit in seconds, checked before every iteration and factorization retry.
     double max_time_seconds = std::numeric_limits<double>::infinity();
 
     /// Converged when the largest |gradient entry| over the free variables is <= this. 0 = off.

@@ -132,7 +132,15 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
     Eigen::VectorXd trial(n);
     std::vector<double> trial_term_values;
 
+    auto out_of_time = [&] { return total.seconds() > opt.max_time_seconds; };
+    auto stop_for_time = [&](const char* where) {
+        return finish(TerminationType::kMaxTime,
+                      format("reached max_time_seconds = ", opt.max_time_seconds) + where);
+    };
     for (int k = 1;; ++k) {
+        // Also before the first iteration: the setup and analysis above may have used the time
+        // already, and one iteration of a large system costs as much again.
+        if (out_of_time()) return stop_for_time(k == 1 ? " before the first iteration" : "");
         if (k > opt.max_iterations) {
             return finish(TerminationType::kMaxIterations,
                           "reached max_iterations = " + std::to_string(opt.max_iterations));
@@ -198,6 +206,11 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
                 ++factorizations;
                 if (status != FactorizationStatus::kNotPositiveDefinite) break;
                 if (tau >= opt.regularization.max) break;
+                // Each retry is a full factorization: overrun the limit by at most one.
+                if (out_of_time()) {
+                    times.factorize += factor_watch.seconds();
+                    return stop_for_time(" while regularizing the Hessian (tau escalation)");
+                }
                 tau = std::min(tau * opt.regularization.factor, opt.regularization.max);
             }
         }
@@ -289,10 +302,6 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
                 format("energy change ", previous_energy - energy) +
                     format(" <= function_tolerance * max(1, |E|) = ",
                            opt.function_tolerance * std::max(1.0, std::abs(previous_energy))));
-        }
-        if (total.seconds() > opt.max_time_seconds) {
-            return finish(TerminationType::kMaxTime,
-                          format("reached max_time_seconds = ", opt.max_time_seconds));
         }
     }
 }

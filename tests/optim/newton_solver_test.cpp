@@ -228,6 +228,21 @@ TEST(NewtonSolver, IterationLimitIsReported) {
     EXPECT_FALSE(summary.success());
 }
 
+// The limit is checked before the first iteration too: a solve whose setup (pattern, analysis)
+// used the time stops there instead of running one more, possibly long, iteration.
+TEST(NewtonSolver, TimeLimitPassedDuringTheSetupStopsBeforeTheFirstIteration) {
+    Problem problem(Eigen::Vector2d(-1.2, 1.0));
+    problem.add_term("rosenbrock", RosenbrockLink{}, {{0, 1}});
+    NewtonOptions options;
+    options.max_time_seconds = 1e-12;
+    const NewtonSummary summary = solve(problem, options);
+    EXPECT_EQ(summary.termination, TerminationType::kMaxTime);
+    EXPECT_EQ(summary.num_steps(), 0);
+    EXPECT_EQ(problem.variables(), Eigen::Vector2d(-1.2, 1.0));
+    EXPECT_NE(summary.message.find("before the first iteration"), std::string::npos)
+        << summary.message;
+}
+
 TEST(NewtonSolver, ReportsNameTheOutcome) {
     Problem problem = make_convex_quadratic(10, Spring{});
     const NewtonSummary summary = solve(problem);
