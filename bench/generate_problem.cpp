@@ -2,9 +2,9 @@
 // format of ../shared/data/tlc/*/input (rest, initial map, simplices, handles), for `sa map` and
 // bench/map_benchmarks.py:
 //
-//   bench_generate_problem --kind fixed-boundary --mesh ../shared/data/tet/hand.mesh \
+//   bench_generate_problem --kind fixed-boundary --mesh ../shared/data/tet/hand.mesh
 //       --deformation twist --amount 1.5 --noise 1.0 --seed 1 --out hand-twist.txt
-//   bench_generate_problem --kind slabs --grid 24 24 64 --deformation twist --amount 3.14 \
+//   bench_generate_problem --kind slabs --grid 24 24 64 --deformation twist --amount 3.14
 //       --slab 0.05 --out bar-twist.txt
 //   bench_generate_problem --grid 40 160 --deformation bend --amount 2 --noise 1 --out strip.txt
 //       (two numbers: a planar rectangle of square cells, two triangles each; bend only)

@@ -328,7 +328,9 @@ TEST_F(SaMapPicture, EveryCommandDrawsItsPictureByDefault) {
                   0)
             << text("err.txt");
         EXPECT_FALSE(fs::exists(folder_.path(c.out + "-2.png")));
-        if (!c.needs_x || renders) EXPECT_TRUE(fs::exists(folder_.path(c.out + "-elsewhere.png")));
+        if (!c.needs_x || renders) {
+            EXPECT_TRUE(fs::exists(folder_.path(c.out + "-elsewhere.png")));
+        }
         const std::string plain = folder_.path(c.out + "-3" + ext);
         ASSERT_EQ(sa(c.arguments + plain + " --no-png --quiet"), 0) << text("err.txt");
         EXPECT_TRUE(fs::exists(plain));

@@ -78,7 +78,10 @@ TEST(UserTerms, TheOptimalBoundLowersTwoBoundsAtOnce) {
     SimplexAssemblyOptions options;
     options.bound = 3.0;
     options.initialization = Initialization::kClosestRotation;
-    const OptimalBound r = optimal_bound(p, options, {4, 1e-3});
+    OptimalBoundOptions rounds;
+    rounds.rounds = 4;
+    rounds.tolerance = 1e-3;
+    const OptimalBound r = optimal_bound(p, options, rounds);
     ASSERT_TRUE(r.verified);
     EXPECT_TRUE(r.solve.success && r.solve.verification.within_bound()) << r.solve.message;
     ASSERT_GE(r.rounds.size(), 2u);
