@@ -1,9 +1,11 @@
 #pragma once
-// A fixed-boundary test problem with many inverted simplices, generated from any mesh.
+// Fixed-boundary test problems with many inverted simplices: generated from any mesh, or from
+// geometry/generated_problems.h.
 
 #include <random>
 
 #include "frontends/simplex_assembly/simplex_assembly.h"
+#include "geometry/generated_problems.h"
 #include "geometry/mesh_topology.h"
 
 namespace sa {
@@ -25,6 +27,16 @@ inline MappingProblem scrambled(const SimplicialMesh& mesh, double amount, unsig
             for (int c = 0; c < mesh.vertices.cols(); ++c) p.initial(v, c) += u(rng);
         }
     }
+    return p;
+}
+
+/// A generated problem (rest, initial map, handles) as the driver's input.
+inline MappingProblem mapping_problem(const GeneratedProblem& g) {
+    MappingProblem p;
+    p.mesh = g.rest;
+    p.initial = g.initial;
+    p.handles = g.handles;
+    p.source = "generated";
     return p;
 }
 

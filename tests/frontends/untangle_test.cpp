@@ -15,6 +15,7 @@
 #include "geometry/mesh_generators.h"
 #include "geometry/rest_frames.h"
 #include "optim/errors.h"
+#include "tests/frontends/scrambled_problem.h"
 
 namespace sa {
 namespace {
@@ -23,15 +24,6 @@ template <int D = 3>
 MapQuality quality(const SimplicialMesh& rest, const Eigen::MatrixXd& map) {
     const RestFrames<D> frames = rest_frames<D>(rest);
     return map_quality<D>(linear_parts<D>(rest, frames, map), frames.volume);
-}
-
-MappingProblem mapping_problem(const GeneratedProblem& g) {
-    MappingProblem p;
-    p.mesh = g.rest;
-    p.initial = g.initial;
-    p.handles = g.handles;
-    p.source = "generated";
-    return p;
 }
 
 TEST(Untangle, UntanglesAGeneratedFixedBoundaryProblem) {

@@ -18,18 +18,10 @@
 #include "geometry/mesh_generators.h"
 #include "geometry/rest_frames.h"
 #include "optim/time_budget.h"
+#include "tests/frontends/scrambled_problem.h"
 
 namespace sa {
 namespace {
-
-MappingProblem mapping_problem(const GeneratedProblem& g) {
-    MappingProblem p;
-    p.mesh = g.rest;
-    p.initial = g.initial;
-    p.handles = g.handles;
-    p.source = "generated";
-    return p;
-}
 
 /// The largest barrier distortion of `x` (normalized) over the simplices of `prepared`.
 double largest_distortion(const PreparedProblem<3>& prepared, const Eigen::MatrixXd& x) {
