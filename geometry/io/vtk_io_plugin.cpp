@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "geometry/io/atomic_file.h"
+#include "geometry/io/byte_cursor.h"
 #include "geometry/io/text_reader.h"
 #include "geometry/io/vtk_capture.h"
 #include "geometry/io/vtk_cells.h"
@@ -213,17 +214,10 @@ std::string file_start(const std::string& path, std::size_t size) {
 /// Throws `PATH: not a text file` when `bytes` hold a NUL or another control character than
 /// whitespace, before VTK reads what is not VTK at all (its messages echo the raw bytes).
 void check_text(const std::string& path, std::string_view bytes, const char* format) {
-    for (std::size_t i = 0; i < bytes.size(); ++i) {
-        const auto c = static_cast<unsigned char>(bytes[i]);
-        if ((c < 0x20 && c != '\n' && c != '\r' && c != '\t' && c != '\f' && c != '\v') ||
-            c == 0x7f) {
-            char byte[8];
-            std::snprintf(byte, sizeof byte, "0x%02x", c);
-            throw InputError(path + ": not a text file (byte " + byte + " at offset " +
-                             std::to_string(i) + "), so not " + format +
-                             ": a binary or compressed file?");
-        }
-    }
+    const std::size_t bad = io::first_control_byte(bytes);
+    if (bad != std::string_view::npos)
+        throw InputError(path + ": " + io::control_byte_message(bytes, bad) + ", so not " + format +
+                         ": a binary or compressed file?");
 }
 
 /// XML files start with '<' (after whitespace).
