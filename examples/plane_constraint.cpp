@@ -5,7 +5,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "frontends/map/map_solve.h"
 #include "geometry/mesh_generators.h"
 #include "geometry/mesh_topology.h"
 

@@ -12,7 +12,7 @@
 #include "frontends/cli/runtime_settings.h"
 #include "frontends/output/layout_picture.h"
 #include "frontends/output/map_output.h"
-#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "frontends/map/map_solve.h"
 #include "geometry/harmonic_map.h"
 #include "geometry/io/vtk_io.h"
 #include "geometry/map_quality.h"

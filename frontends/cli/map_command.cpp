@@ -13,7 +13,7 @@
 #include "frontends/output/map_output.h"
 #include "frontends/output/map_picture.h"
 #include "frontends/output/map_report.h"
-#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "frontends/map/map_solve.h"
 #include "geometry/io/index_list_io.h"
 #include "geometry/io/mesh_file.h"
 #include "optim/errors.h"

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "frontends/simplex_assembly/simplex_assembly_options.h"
+#include "frontends/map/map_options.h"
 
 namespace sa::cli {
 

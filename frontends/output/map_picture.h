@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "frontends/map/map_solve.h"
 
 namespace sa {
 

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "frontends/map/map_solve.h"
 #include "geometry/handle_feasibility.h"
 
 namespace sa {

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "frontends/param/start_fallback.h"
-#include "frontends/simplex_assembly/optimal_bound.h"
-#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "frontends/map/optimal_bound.h"
+#include "frontends/map/map_solve.h"
 
 namespace sa {
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "frontends/simplex_assembly/vertex_descent.h"
+#include "frontends/map/vertex_descent.h"
 #include "geometry/mesh_topology.h"
 
 namespace sa {

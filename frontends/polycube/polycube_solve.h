@@ -1,6 +1,6 @@
 #pragma once
 // The PolyCube solve (issue 21; the paper's 5.3 with 5.1's barriers), a configuration of the mesh
-// driver (simplex_assembly.h) and its engine, with no schedule of its own:
+// driver (frontends/map/map_solve.h) and its engine, with no schedule of its own:
 //
 //   1. the cube-cover start (geometry/cube_cover.h): planar, axis-aligned charts, possibly folded;
 //      when folded, untangled in vertex variables with every plane's coordinate fixed
@@ -35,8 +35,8 @@
 #include <vector>
 
 #include "frontends/polycube/polycube_preparation.h"
-#include "frontends/simplex_assembly/optimal_bound.h"
-#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "frontends/map/optimal_bound.h"
+#include "frontends/map/map_solve.h"
 
 namespace sa {
 

@@ -1,5 +1,5 @@
 #pragma once
-// A per-simplex energy of A handed to the mesh driver (simplex_assembly.h): the built-in
+// A per-simplex energy of A handed to the mesh driver (frontends/map/map_solve.h): the built-in
 // mu E_m + E_C of the options, or a user's own E_m or barrier. The driver uses one in every
 // place an energy of A appears, each through a generic adapter, never a per-type method:
 //   - the engine (kind 1 of engine.h), in any layout: the linear parts of r-SA and f-SA, v-SA's

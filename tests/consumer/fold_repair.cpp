@@ -6,7 +6,7 @@
 
 #include "frontends/output/layout_picture.h"
 #include "frontends/output/map_output.h"
-#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "frontends/map/map_solve.h"
 #include "geometry/mesh_generators.h"
 
 int main(int argc, char** argv) {

@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "frontends/map/map_solve.h"
 #include "geometry/generated_problems.h"
 #include "geometry/mesh_topology.h"
 

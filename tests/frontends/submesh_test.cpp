@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "frontends/map/map_solve.h"
 #include "geometry/mesh_generators.h"
 #include "geometry/mesh_topology.h"
 

@@ -1,4 +1,4 @@
-#include "frontends/simplex_assembly/detail/forced_distortion.h"
+#include "frontends/map/detail/forced_distortion.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>

@@ -1,11 +1,11 @@
-#include "frontends/simplex_assembly/optimal_bound.h"
+#include "frontends/map/optimal_bound.h"
 
 #include <memory>
 #include <string>
 
 #include "energies/distortion.h"
-#include "frontends/simplex_assembly/detail/prepared_problem.h"
-#include "frontends/simplex_assembly/detail/round_verification.h"
+#include "frontends/map/detail/prepared_problem.h"
+#include "frontends/map/detail/round_verification.h"
 
 #include "optim/errors.h"
 #include "optim/stopwatch.h"

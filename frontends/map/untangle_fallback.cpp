@@ -1,7 +1,7 @@
-#include "frontends/simplex_assembly/detail/untangle_fallback.h"
+#include "frontends/map/detail/untangle_fallback.h"
 
-#include "frontends/simplex_assembly/detail/forced_distortion.h"
-#include "frontends/simplex_assembly/detail/vertex_stage.h"
+#include "frontends/map/detail/forced_distortion.h"
+#include "frontends/map/detail/vertex_stage.h"
 #include "geometry/map_quality.h"
 #include "optim/stopwatch.h"
 

@@ -17,7 +17,7 @@
 #include <functional>
 #include <vector>
 
-#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "frontends/map/map_solve.h"
 
 namespace sa {
 

@@ -1,4 +1,4 @@
-#include "frontends/simplex_assembly/detail/assembly_problem.h"
+#include "frontends/map/detail/assembly_problem.h"
 
 #include <algorithm>
 #include <cmath>

@@ -13,7 +13,7 @@
 
 #include <vector>
 
-#include "frontends/simplex_assembly/detail/prepared_problem.h"
+#include "frontends/map/detail/prepared_problem.h"
 
 namespace sa {
 

@@ -1,4 +1,4 @@
-#include "frontends/simplex_assembly/simplex_assembly_options.h"
+#include "frontends/map/map_options.h"
 
 #include <algorithm>
 #include <cmath>

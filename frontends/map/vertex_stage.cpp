@@ -1,11 +1,11 @@
-#include "frontends/simplex_assembly/detail/vertex_stage.h"
+#include "frontends/map/detail/vertex_stage.h"
 
 #include <algorithm>
 #include <cstdio>
 
 #include "energies/boundary_angle_energy.h"
 #include "frontends/simplex_assembly/engine.h"
-#include "frontends/simplex_assembly/vertex_descent.h"
+#include "frontends/map/vertex_descent.h"
 #include "geometry/map_quality.h"
 #include "optim/time_budget.h"
 

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "frontends/map/map_solve.h"
 
 namespace sa {
 

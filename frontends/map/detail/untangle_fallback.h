@@ -14,7 +14,7 @@
 
 #include <string>
 
-#include "frontends/simplex_assembly/detail/prepared_problem.h"
+#include "frontends/map/detail/prepared_problem.h"
 #include "frontends/simplex_assembly/untangle.h"
 #include "optim/time_budget.h"
 

@@ -30,9 +30,9 @@
 #include <string>
 #include <vector>
 
-#include "frontends/simplex_assembly/detail/assembly_problem.h"
-#include "frontends/simplex_assembly/detail/prepared_problem.h"
-#include "frontends/simplex_assembly/simplex_assembly_options.h"
+#include "frontends/map/detail/assembly_problem.h"
+#include "frontends/map/detail/prepared_problem.h"
+#include "frontends/map/map_options.h"
 #include "frontends/simplex_assembly/simplex_term.h"
 #include "geometry/boundary_fans.h"
 #include "geometry/rest_frames.h"

@@ -1,4 +1,4 @@
-#include "frontends/simplex_assembly/detail/submesh_assembly.h"
+#include "frontends/map/detail/submesh_assembly.h"
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -9,9 +9,9 @@
 #include <unordered_map>
 
 #include "energies/distortion.h"
-#include "frontends/simplex_assembly/detail/forced_distortion.h"
-#include "frontends/simplex_assembly/detail/submesh_start.h"
-#include "frontends/simplex_assembly/detail/vertex_stage.h"
+#include "frontends/map/detail/forced_distortion.h"
+#include "frontends/map/detail/submesh_start.h"
+#include "frontends/map/detail/vertex_stage.h"
 #include "geometry/handle_feasibility.h"
 #include "geometry/map_quality.h"
 #include "geometry/submesh.h"

@@ -1,5 +1,8 @@
 #pragma once
 // Simplex Assembly (Fu and Liu 2016): an inversion-free map of a simplicial mesh with handles.
+// The map front-end, also the mesh driver under `sa param`, `sa deform` and `sa polycube`: a
+// configuration of the engine (frontends/simplex_assembly/engine.h) by the mesh's simplices,
+// its edges and its handles.
 //
 //   1. normalize: rest and map coordinates centred, scaled by the rest bounding-box diagonal;
 //   2. disassemble: the initial map's linear parts A_i^0 are projected into the barrier's feasible
@@ -25,7 +28,7 @@
 
 #include "frontends/simplex_assembly/assembly_plugin.h"
 #include "frontends/simplex_assembly/engine_options.h"
-#include "frontends/simplex_assembly/simplex_assembly_options.h"
+#include "frontends/map/map_options.h"
 #include "frontends/simplex_assembly/simplex_term.h"
 #include "geometry/map_quality.h"
 #include "geometry/simplicial_mesh.h"

@@ -23,7 +23,7 @@
 // one colour share no vertex, and colours run in a fixed order. (With a time limit, where the run
 // stops depends on the machine's speed.)
 
-#include "frontends/simplex_assembly/detail/prepared_problem.h"
+#include "frontends/map/detail/prepared_problem.h"
 
 namespace sa {
 

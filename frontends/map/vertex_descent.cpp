@@ -1,11 +1,11 @@
-#include "frontends/simplex_assembly/vertex_descent.h"
+#include "frontends/map/vertex_descent.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
 
-#include "frontends/simplex_assembly/detail/prepared_problem.h"
-#include "frontends/simplex_assembly/detail/vertex_stage.h"
+#include "frontends/map/detail/prepared_problem.h"
+#include "frontends/map/detail/vertex_stage.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
 #include "optim/time_budget.h"

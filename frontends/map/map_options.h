@@ -1,5 +1,5 @@
 #pragma once
-// Options of the Simplex Assembly driver, with the paper's constants as defaults (section 4.4).
+// Options of the mesh driver (map_solve.h), with the paper's constants as defaults (section 4.4).
 
 #include <cstdint>
 #include <optional>
@@ -120,7 +120,7 @@ struct SimplexAssemblyOptions {
     double submesh_band = 0.0;
     /// Most local/global iterations after the paper's M^0 in the submesh mode's start:
     /// Anderson-accelerated ARAP (rotations) or ASAP (similarities) iterations, which spread
-    /// large handle motions (frontends/simplex_assembly/detail/submesh_start.h); 0 = start from the
+    /// large handle motions (frontends/map/detail/submesh_start.h); 0 = start from the
     /// initial map itself. The iterate with the fewest bad simplices is kept.
     int start_iterations = 500;
     /// kAuto takes the full solve for meshes of at most this many triangles or tetrahedra (a

@@ -17,7 +17,7 @@
 
 #include <vector>
 
-#include "frontends/simplex_assembly/detail/prepared_problem.h"
+#include "frontends/map/detail/prepared_problem.h"
 
 namespace sa {
 

@@ -1,4 +1,4 @@
-#include "frontends/simplex_assembly/detail/prepared_problem.h"
+#include "frontends/map/detail/prepared_problem.h"
 
 #include <cmath>
 #include <set>

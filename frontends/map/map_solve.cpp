@@ -1,15 +1,15 @@
-#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "frontends/map/map_solve.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
-#include "frontends/simplex_assembly/detail/prepared_problem.h"
-#include "frontends/simplex_assembly/detail/round_verification.h"
-#include "frontends/simplex_assembly/detail/submesh_assembly.h"
-#include "frontends/simplex_assembly/detail/untangle_fallback.h"
-#include "frontends/simplex_assembly/detail/vertex_stage.h"
+#include "frontends/map/detail/prepared_problem.h"
+#include "frontends/map/detail/round_verification.h"
+#include "frontends/map/detail/submesh_assembly.h"
+#include "frontends/map/detail/untangle_fallback.h"
+#include "frontends/map/detail/vertex_stage.h"
 #include "geometry/translation_gluing.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"

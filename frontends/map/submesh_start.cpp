@@ -1,12 +1,12 @@
-#include "frontends/simplex_assembly/detail/submesh_start.h"
+#include "frontends/map/detail/submesh_start.h"
 
 #include <tbb/parallel_for.h>
 
 #include <cmath>
 
 #include "energies/barrier.h"
-#include "frontends/simplex_assembly/detail/forced_distortion.h"
-#include "frontends/simplex_assembly/detail/untangle_fallback.h"
+#include "frontends/map/detail/forced_distortion.h"
+#include "frontends/map/detail/untangle_fallback.h"
 #include "geometry/arap_local_step.h"
 #include "geometry/branch_points.h"
 #include "geometry/disassembly.h"

@@ -33,7 +33,7 @@
 #include <string>
 #include <vector>
 
-#include "frontends/simplex_assembly/detail/prepared_problem.h"
+#include "frontends/map/detail/prepared_problem.h"
 #include "optim/logger.h"
 
 namespace sa {

@@ -7,8 +7,8 @@
 #include <memory>
 
 #include "energies/simplex_energy.h"
-#include "frontends/simplex_assembly/detail/assembly_problem.h"
-#include "frontends/simplex_assembly/simplex_assembly.h"
+#include "frontends/map/detail/assembly_problem.h"
+#include "frontends/map/map_solve.h"
 #include "geometry/mesh_topology.h"
 #include "geometry/rest_frames.h"
 #include "geometry/vertex_recovery.h"
