@@ -58,6 +58,16 @@ VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOp
     };
     result.times.setup += stage.lap();
 
+    auto degenerate = [&](const Eigen::MatrixXd& positions) {
+        return map_quality<D>(linear_parts<D>(prepared.mesh, prepared.frames, positions),
+                              prepared.frames.volume)
+            .degenerate;
+    };
+    // A round whose result has degenerate simplices (by the verification's relative rule) while
+    // its start had none is undone, and the continuation ends: an energy whose minimizers are not
+    // representable (the conformal map of a nearly closed or strongly stretched surface shrinks
+    // parts of it exponentially) would otherwise turn a valid start into a failed result.
+    bool undone = false;
     auto run_round = [&](double s, double bound) {
         SimplexEnergyOptions e = base;
         e.barrier.s = s;
@@ -81,9 +91,20 @@ VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOp
         VertexStage v = run_vertex_stage<D>(
             prepared.mesh, prepared.frames, {simplex_term<D>("simplex energy", energy)}, x, fixed,
             o, observer.logger, VertexStageTerms<D>{prepared.assembly.fans, {}});
-        if (v.ran) x = std::move(v.positions);
         round.iterations = v.newton.num_steps();
         round.termination = v.note;
+        if (v.ran) {
+            const Index before = degenerate(x);
+            const Index after = before == 0 ? degenerate(v.positions) : 0;
+            if (after > 0) {
+                undone = true;
+                round.termination += "; undone: it left " + std::to_string(after) +
+                                     " degenerate simplices, its start none";
+                log_line(observer.logger, "vertex descent: " + round.termination);
+            } else {
+                x = std::move(v.positions);
+            }
+        }
         round.max_distortion_after = largest_distortion(x);
         result.vertex_stage_ran = result.vertex_stage_ran || v.ran;
         result.vertex_stage_note = v.note;
@@ -102,18 +123,18 @@ VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOp
             const double after = run_round(s, first_bound);
             const bool stalled = !(after < (1.0 - kStall) * d);
             d = after;
-            if (s >= options.s || stalled) break;
+            if (s >= options.s || stalled || undone) break;
         }
         // The bound's continuation, for a start that was over it.
         if (bound < kInfinity && first_bound == kInfinity) {
-            for (int r = 0; r < kMaxRounds && d >= bound && !budget.exhausted(); ++r) {
+            for (int r = 0; r < kMaxRounds && d >= bound && !undone && !budget.exhausted(); ++r) {
                 const double after =
                     run_round(std::min(options.s, kExponentRange / d), d + 0.1 * (d - 1.0));
                 const bool stalled = !(after < (1.0 - kStall) * d);
                 d = after;
                 if (stalled) break;
             }
-            if (d < bound && !budget.exhausted())
+            if (d < bound && !undone && !budget.exhausted())
                 run_round(std::min(options.s, kExponentRange / d), bound);
         }
     }

@@ -19,6 +19,10 @@
 //    K_r = d_max + (d_max - 1) / 10 lower d_max (the paper's optimal-bound rounds, section 5.1,
 //    with room above the current maximum so that the start is inside); the last round takes K.
 //    If d_max stops falling first, the result is valid but over the bound, and says so.
+// A round whose result has degenerate simplices (the verification's relative rule) while its start
+// had none is undone and ends the descent: energies whose minimizers are not representable in
+// doubles (conformal maps of long or nearly closed surfaces shrink parts by 1e14 and more) cannot
+// turn a valid start into a failed result.
 
 #include <string>
 #include <vector>

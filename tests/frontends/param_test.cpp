@@ -284,6 +284,47 @@ TEST(Parameterization, AnUnreachableBoundIsReportedWithAMapWithoutFoldovers) {
     expect_valid_layout(mesh, r.uv);
 }
 
+// The unit sphere without the star of its vertex nearest to +z, stretched `stretch` times along x:
+// a long, nearly closed surface. Its conformal maps shrink parts of it by many orders of magnitude
+// (the optimum is not representable in doubles); Tutte's map of it has no degenerate triangle.
+// At stretch 1000 LSCM folds it, and without the undo no Tutte start's descent verifies.
+SimplicialMesh stretched_sphere_with_hole(int n, double stretch) {
+    const SimplicialMesh sphere = sphere_triangles(n);
+    Index hole = 0;
+    for (Index v = 0; v < sphere.num_vertices(); ++v) {
+        if (sphere.vertices(v, 2) > sphere.vertices(hole, 2)) hole = v;
+    }
+    SimplicialMesh mesh;
+    mesh.vertices.resize(sphere.num_vertices() - 1, 3);
+    for (Index v = 0, w = 0; v < sphere.num_vertices(); ++v) {
+        if (v == hole) continue;
+        mesh.vertices.row(w++) = sphere.vertices.row(v);
+    }
+    mesh.vertices.col(0) *= stretch;
+    std::vector<Eigen::Vector3i> kept;
+    for (Index s = 0; s < sphere.num_simplices(); ++s) {
+        Eigen::Vector3i f = sphere.simplices.row(s).transpose();
+        if (f[0] == hole || f[1] == hole || f[2] == hole) continue;
+        for (int k = 0; k < 3; ++k) f[k] -= f[k] > hole ? 1 : 0;
+        kept.push_back(f);
+    }
+    mesh.simplices.resize(kept.size(), 3);
+    for (std::size_t k = 0; k < kept.size(); ++k) mesh.simplices.row(k) = kept[k].transpose();
+    return mesh;
+}
+
+// A round of the vertex descent that turns its valid start into a map with numerically degenerate
+// triangles is undone: whatever the requested start does, a disk gets a verified map.
+TEST(Parameterization, TheFallbackKeepsAValidMapWhenTheEnergyShrinksTrianglesAway) {
+    const SimplicialMesh mesh = stretched_sphere_with_hole(8, 1000.0);
+    const ParameterizationResult r =
+        parameterize(mesh, "stretched sphere", nullptr, InitialMap::kLscm, conformal_options());
+    EXPECT_TRUE(r.success) << r.message;
+    EXPECT_EQ(r.solve.verification.inverted, 0) << r.message;
+    EXPECT_EQ(r.solve.verification.degenerate, 0) << r.message;
+    expect_valid_layout(mesh, r.uv);
+}
+
 TEST(Parameterization, RejectsMeshesThatAreNotDisks) {
     SimplicialMesh closed;
     closed.vertices.resize(4, 3);
