@@ -10,6 +10,7 @@
 #include "geometry/arap_local_step.h"
 #include "geometry/branch_points.h"
 #include "geometry/disassembly.h"
+#include "geometry/handle_rotation_start.h"
 #include "geometry/map_quality.h"
 #include "geometry/submesh.h"
 #include "optim/anderson_acceleration.h"
@@ -149,6 +150,23 @@ SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& 
                 }
             }
         }
+    }
+    // Handles turned far from their rest orientation (the end slabs of a bar twisted by half a
+    // turn): the simplices between them and the rest of an initial map are folded across the
+    // turn, and region solves, M^0 and the local/global iterations from it settle with simplices
+    // wrapped around an edge, which the untangling makes positive without unwrapping (branch
+    // points: every simplex positive, the map not locally injective). The handles' rotations
+    // carried through the mesh (handle_rotation_start.h, the start of `sa deform`) are the other
+    // start, taken when it has fewer bad simplices.
+    if (!input.handles.empty()) {
+        HandleRotationStart rotated = handle_rotation_start<D>(p.mesh, p.frames, p.recovery(), x);
+        std::vector<Mat<D>> parts = linear_parts<D>(p.mesh, p.frames, rotated.positions);
+        if (rotated.rotation_groups > 0 &&
+            keep_if_better(rotated.positions, parts, "the handles' rotations")) {
+            x = std::move(rotated.positions);
+            A = std::move(parts);
+        }
+        if (done()) return start;
     }
     // Local defects: regions no larger than what the auto mode solves in full are solved as they
     // are. The iterations below move every vertex (then the vertex stage covers the whole mesh)
