@@ -157,7 +157,10 @@ SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& 
     // wrapped around an edge, which the untangling makes positive without unwrapping (branch
     // points: every simplex positive, the map not locally injective). The handles' rotations
     // carried through the mesh (handle_rotation_start.h, the start of `sa deform`) are the other
-    // start, taken when it has fewer bad simplices.
+    // start, taken when it has fewer bad simplices; M^0 and the local/global iterations then go
+    // on from it, whatever the size of its regions: their lower Q shortens the vertex stage
+    // (deform/botijo, BENCHMARKS.md).
+    bool rotations = false;
     if (!input.handles.empty()) {
         HandleRotationStart rotated = handle_rotation_start<D>(p.mesh, p.frames, p.recovery(), x);
         std::vector<Mat<D>> parts = linear_parts<D>(p.mesh, p.frames, rotated.positions);
@@ -165,6 +168,7 @@ SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& 
             keep_if_better(rotated.positions, parts, "the handles' rotations")) {
             x = std::move(rotated.positions);
             A = std::move(parts);
+            rotations = true;
         }
         if (done()) return start;
     }
@@ -177,18 +181,20 @@ SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& 
     // fixed-boundary problems of bench/map_benchmarks.py with --flatten).
     const Index regions =
         static_cast<Index>(grow_rings(p.mesh, p.topology, start.bad, options.rings).size());
-    if (regions <= (D == 2 ? options.auto_full_triangles : options.auto_full_tetrahedra) &&
+    if (!rotations &&
+        regions <= (D == 2 ? options.auto_full_triangles : options.auto_full_tetrahedra) &&
         barrier_forced_simplices<D>(p, options, kBarrierExponentCap).empty()) {
         start.description += " (its regions are small)";
         return start;
     }
 
     // M^0.
+    const std::string origin = rotations ? " from the handles' rotations" : "";
     const Initialization projection = options.effective_initialization();
     project_linear_parts<D>(A, projection, options.seed);
     x = p.recovery().recover(A, p.pinned);
     A = linear_parts<D>(p.mesh, p.frames, x);
-    keep_if_better(x, A, "M^0 (Eq. 6)");
+    keep_if_better(x, A, "M^0 (Eq. 6)" + origin);
 
     // Accelerated local/global iterations from M^0.
     const bool similarity = projection == Initialization::kClosestSimilarity;
@@ -203,7 +209,8 @@ SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& 
     std::vector<double> history{previous};  // Q after each iteration
     for (int iteration = 1; iteration <= options.start_iterations; ++iteration) {
         start.iterations = iteration;
-        const std::string label = std::string(name) + " iteration " + std::to_string(iteration);
+        const std::string label =
+            std::string(name) + " iteration " + std::to_string(iteration) + origin;
         A = linear_parts<D>(p.mesh, p.frames, x);
         if (keep_if_better(x, A, label)) last_improvement = iteration;
         if (done() || iteration - last_improvement > patience || budget.exhausted()) break;
