@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "frontends/param/start_fallback.h"
-#include "frontends/map/optimal_bound.h"
 #include "frontends/map/map_solve.h"
+#include "frontends/map/optimal_bound.h"
+#include "frontends/param/start_fallback.h"
 
 namespace sa {
 
