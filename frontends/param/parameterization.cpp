@@ -7,33 +7,24 @@
 #include "geometry/initial_maps.h"
 #include "geometry/map_quality.h"
 #include "geometry/rest_frames.h"
+#include "optim/enum_names.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
 #include "optim/time_budget.h"
 
 namespace sa {
 
+constexpr EnumName<InitialMap> kInitialMapNames[] = {{InitialMap::kLscm, "lscm"},
+                                                     {InitialMap::kTutte, "tutte"},
+                                                     {InitialMap::kTutteUniform, "tutte-uniform"},
+                                                     {InitialMap::kHarmonic, "harmonic"}};
+
 std::string to_string(InitialMap map) {
-    switch (map) {
-        case InitialMap::kLscm:
-            return "lscm";
-        case InitialMap::kTutte:
-            return "tutte";
-        case InitialMap::kTutteUniform:
-            return "tutte-uniform";
-        case InitialMap::kHarmonic:
-            return "harmonic";
-    }
-    return "unknown";
+    return enum_name(kInitialMapNames, map);
 }
 
 InitialMap parse_initial_map(const std::string& name) {
-    for (InitialMap m : {InitialMap::kLscm, InitialMap::kTutte, InitialMap::kTutteUniform,
-                         InitialMap::kHarmonic}) {
-        if (to_string(m) == name) return m;
-    }
-    throw InvalidArgumentError("unknown initial map '" + name +
-                               "' (expected lscm, tutte, tutte-uniform or harmonic)");
+    return parse_enum(kInitialMapNames, name, "initial map");
 }
 
 ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::string& source,
