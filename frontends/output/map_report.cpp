@@ -4,6 +4,8 @@
 
 namespace sa {
 
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FixedBoundaryPart, dimension, simplices, first_simplex, volume,
+                                   turning_measured, turning, euler)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SubmeshRound, round, bad_simplices, regions, colors, solved,
                                    failed, remaining, time)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(StageTimes, setup, disassembly, optimization, recovery,
@@ -61,7 +63,8 @@ nlohmann::json infeasible_report(const MappingProblem& problem,
                             {"inverted_simplices", f.inverted},
                             {"flat_simplices", f.flat},
                             {"conflicts", conflicts},
-                            {"collapsed_edge_list", f.collapsed_edges}};
+                            {"collapsed_edge_list", f.collapsed_edges},
+                            {"fixed_boundaries", f.enclosing}};
     return report;
 }
 
