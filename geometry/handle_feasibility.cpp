@@ -78,6 +78,10 @@ std::vector<FixedBoundaryPart> failing_fixed_boundaries(const SimplicialMesh& me
     double factorial = 1.0;
     for (int k = 2; k <= d; ++k) factorial *= k;
     Eigen::MatrixXd corners(d, d + 1);
+    // Per vertex, for the loops of one part at a time (reset after each part: a mesh may have
+    // many small parts).
+    std::vector<Index> next(mesh.num_vertices(), -1);
+    std::vector<unsigned char> seen(mesh.num_vertices(), 0), used(mesh.num_vertices(), 0);
     for (Index c = 0; c < count; ++c) {
         if (!fixed[c]) continue;
         const BoundaryFacet& first = topology.boundary_facets[facets[c].front()];
@@ -110,11 +114,11 @@ std::vector<FixedBoundaryPart> failing_fixed_boundaries(const SimplicialMesh& me
         p.simplices = Index(simplices[c].size());
         p.first_simplex = simplices[c].front();
         p.volume = cones / factorial / std::pow(scale, d);
-        bool fails = !(cones > 1e-12 * magnitude);
+        p.encloses_volume = cones > 1e-12 * magnitude;
+        bool fails = !p.encloses_volume;
 
         if (d == 2 && scaled.cols() == 2) {
             // The boundary loops, each edge directed with its triangle's rest orientation.
-            std::vector<Index> next(mesh.num_vertices(), -1);
             bool loops = true;
             for (Index f : facets[c]) {
                 const BoundaryFacet& b = topology.boundary_facets[f];
@@ -125,7 +129,6 @@ std::vector<FixedBoundaryPart> failing_fixed_boundaries(const SimplicialMesh& me
                 next[from] = to;
             }
             double turning = 0.0;
-            std::vector<unsigned char> seen(mesh.num_vertices(), 0);
             for (Index f : facets[c]) {
                 if (!loops) break;
                 const Index start = topology.boundary_facets[f].vertices[0];
@@ -148,17 +151,27 @@ std::vector<FixedBoundaryPart> failing_fixed_boundaries(const SimplicialMesh& me
                 } while (loops && v != start);
             }
             if (loops) {
-                std::vector<unsigned char> used(mesh.num_vertices(), 0);
                 Index vertices = 0;
                 for (Index s : simplices[c])
                     for (int k = 0; k < 3; ++k)
-                        if (!used[mesh.simplices(s, k)]++) ++vertices;
+                        if (!used[mesh.simplices(s, k)]) {
+                            used[mesh.simplices(s, k)] = 1;
+                            ++vertices;
+                        }
                 const Index edges = (3 * p.simplices + Index(facets[c].size())) / 2;
                 p.turning_measured = true;
                 p.turning = int(std::lround(turning / (2.0 * M_PI)));
                 p.euler = vertices - edges + p.simplices;
                 fails = fails || p.turning < p.euler;
             }
+            for (Index f : facets[c]) {
+                for (int k = 0; k < 2; ++k) {
+                    next[topology.boundary_facets[f].vertices[k]] = -1;
+                    seen[topology.boundary_facets[f].vertices[k]] = 0;
+                }
+            }
+            for (Index s : simplices[c])
+                for (int k = 0; k < 3; ++k) used[mesh.simplices(s, k)] = 0;
         }
         if (fails) failing.push_back(p);
     }
@@ -200,7 +213,7 @@ std::string HandleFeasibility::describe(std::size_t shown) const {
         std::ostringstream out;
         out << "the " << p.simplices << " simplices connected to simplex " << p.first_simplex
             << " have every boundary vertex a handle, and ";
-        if (!(p.volume > 0.0)) {
+        if (!p.encloses_volume) {
             out << "their boundary's image encloses a signed "
                 << (p.dimension == 2 ? "area" : "volume") << " of " << p.volume
                 << " (their images' " << (p.dimension == 2 ? "areas" : "volumes")

@@ -50,6 +50,7 @@ struct FixedBoundaryPart {
     Index first_simplex = -1;  ///< its lowest-numbered simplex
     /// The signed volume (area for triangles) its boundary's image encloses, in the targets' units.
     double volume = 0.0;
+    bool encloses_volume = true;  ///< volume is positive (beyond round-off)
     /// Triangles mapped to the plane: the boundary loops' total turning number and the part's
     /// Euler characteristic V - E + F (not measured on a boundary that is not a set of loops).
     bool turning_measured = false;

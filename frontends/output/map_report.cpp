@@ -5,7 +5,7 @@
 namespace sa {
 
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FixedBoundaryPart, dimension, simplices, first_simplex, volume,
-                                   turning_measured, turning, euler)
+                                   encloses_volume, turning_measured, turning, euler)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SubmeshRound, round, bad_simplices, regions, colors, solved,
                                    failed, remaining, time)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(StageTimes, setup, disassembly, optimization, recovery,
