@@ -41,8 +41,8 @@ std::vector<std::vector<Index>> boundary_loops(const SimplicialMesh& mesh,
     return loops;
 }
 
-void require_disk(const SimplicialMesh& mesh, const MeshTopology& topology,
-                  const std::string& source) {
+Index require_planar_surface(const SimplicialMesh& mesh, const MeshTopology& topology,
+                             const std::string& source) {
     if (mesh.simplex_dimension() != 2)
         throw InputError(source + ": a parameterization needs a triangle mesh");
     for (Index v = 0; v < mesh.num_vertices(); ++v) {
@@ -61,21 +61,40 @@ void require_disk(const SimplicialMesh& mesh, const MeshTopology& topology,
             }
         }
     }
-    const std::vector<std::vector<Index>> loops = boundary_loops(mesh, topology);
-    if (loops.empty()) {
+    Index parts = 0;
+    const std::vector<Index> part = topology.simplex_components(&parts);
+    if (parts > 1) {
+        const Index other = Index(
+            std::find_if(part.begin(), part.end(), [](Index p) { return p != 0; }) - part.begin());
+        throw InputError(source + ": the mesh has " + std::to_string(parts) +
+                         " connected parts (triangles 0 and " + std::to_string(other) +
+                         " are in different ones); a planar parameterization takes one at a time");
+    }
+    const Index loops = Index(boundary_loops(mesh, topology).size());
+    if (loops == 0) {
         throw InputError(source +
                          ": the mesh is closed (no boundary); a planar parameterization needs a "
                          "disk: cut it open first");
     }
-    if (loops.size() > 1) {
-        throw InputError(source + ": the mesh has " + std::to_string(loops.size()) +
-                         " boundary loops; a planar parameterization needs one (a disk)");
-    }
     const long chi =
         long(mesh.num_vertices()) - long(topology.edges.size()) + long(mesh.num_simplices());
-    if (chi != 1) {
-        throw InputError(source + ": Euler characteristic " + std::to_string(chi) +
-                         " (a disk has 1): the surface has handles");
+    if (chi != 2 - loops) {
+        const long genus = (2 - long(loops) - chi) / 2;
+        throw InputError(source + ": Euler characteristic " + std::to_string(chi) + " with " +
+                         std::to_string(loops) + " boundary loop" + (loops == 1 ? "" : "s") +
+                         " (genus " + std::to_string(genus) +
+                         "): the surface has handles; a planar parameterization needs genus 0: "
+                         "cut it to a disk first");
+    }
+    return loops;
+}
+
+void require_disk(const SimplicialMesh& mesh, const MeshTopology& topology,
+                  const std::string& source) {
+    const Index loops = require_planar_surface(mesh, topology, source);
+    if (loops > 1) {
+        throw InputError(source + ": the mesh has " + std::to_string(loops) +
+                         " boundary loops; this needs one (a disk)");
     }
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // Boundary loops of a triangle mesh, and the checks a parameterization needs: a manifold surface
-// with exactly one boundary loop and the Euler characteristic of a disk (V - E + F = 1).
+// with a boundary and genus 0 (a disk: one loop and V - E + F = 1; or with holes).
 
 #include <string>
 #include <vector>
@@ -19,5 +19,11 @@ std::vector<std::vector<Index>> boundary_loops(const SimplicialMesh& mesh,
 /// (checked by mesh_topology), one boundary loop, V - E + F = 1, every vertex used.
 void require_disk(const SimplicialMesh& mesh, const MeshTopology& topology,
                   const std::string& source);
+
+/// Throws InputError naming `source` unless the triangle mesh can lie in the plane: manifold,
+/// connected (over shared edges), at least one boundary loop, genus 0 (V - E + F = 2 - loops: a disk, an annulus, a disk with
+/// holes), every vertex used. Returns the number of boundary loops.
+Index require_planar_surface(const SimplicialMesh& mesh, const MeshTopology& topology,
+                             const std::string& source);
 
 }  // namespace sa

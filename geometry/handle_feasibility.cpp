@@ -50,6 +50,134 @@ std::string listed(const List& list, std::size_t shown, Print print) {
     return out.str();
 }
 
+/// The fixed-boundary check (handle_feasibility.h) on every part whose boundary vertices are all
+/// handles; returns the parts that fail it. `row_of[v]` is v's row of `scaled` (-1: not a handle).
+std::vector<FixedBoundaryPart> failing_fixed_boundaries(const SimplicialMesh& mesh,
+                                                        const MeshTopology& topology,
+                                                        const std::vector<Index>& row_of,
+                                                        const Eigen::MatrixXd& scaled,
+                                                        const Eigen::MatrixXd& rest, double scale) {
+    std::vector<FixedBoundaryPart> failing;
+    const int d = mesh.simplex_dimension();
+    Index count = 0;
+    const std::vector<Index> part = topology.simplex_components(&count);
+    std::vector<unsigned char> fixed(count, 1), bounded(count, 0);
+    for (const BoundaryFacet& f : topology.boundary_facets) {
+        bounded[part[f.simplex]] = 1;
+        for (int k = 0; k < d; ++k)
+            if (row_of[f.vertices[k]] < 0) fixed[part[f.simplex]] = 0;
+    }
+    std::vector<std::vector<Index>> simplices(count), facets(count);
+    for (Index c = 0; c < count; ++c) fixed[c] = fixed[c] && bounded[c];
+    for (Index s = 0; s < mesh.num_simplices(); ++s)
+        if (fixed[part[s]]) simplices[part[s]].push_back(s);
+    for (std::size_t f = 0; f < topology.boundary_facets.size(); ++f)
+        if (fixed[part[topology.boundary_facets[f].simplex]])
+            facets[part[topology.boundary_facets[f].simplex]].push_back(Index(f));
+
+    double factorial = 1.0;
+    for (int k = 2; k <= d; ++k) factorial *= k;
+    Eigen::MatrixXd corners(d, d + 1);
+    // Per vertex, for the loops of one part at a time (reset after each part: a mesh may have
+    // many small parts).
+    std::vector<Index> next(mesh.num_vertices(), -1);
+    std::vector<unsigned char> seen(mesh.num_vertices(), 0), used(mesh.num_vertices(), 0);
+    for (Index c = 0; c < count; ++c) {
+        if (!fixed[c]) continue;
+        const BoundaryFacet& first = topology.boundary_facets[facets[c].front()];
+        const Eigen::VectorXd origin = scaled.row(row_of[first.vertices[0]]).transpose();
+        // The enclosed volume as the sum of the cones from `origin` to the boundary facets, each
+        // oriented as its simplex's facet; and as the sum over the simplices with every interior
+        // vertex at `origin`: the two agree when the orientations are consistent (they always are
+        // for a valid rest shape), which is what makes the volume independent of the interior.
+        double cones = 0.0, magnitude = 0.0, collapsed = 0.0;
+        for (Index f : facets[c]) {
+            const BoundaryFacet& b = topology.boundary_facets[f];
+            for (int k = 0; k <= d; ++k) {
+                const Index v = mesh.simplices(b.simplex, k);
+                corners.col(k) = k == b.opposite ? origin : Eigen::VectorXd(scaled.row(row_of[v]));
+            }
+            const double cone = rest_orientation(mesh, rest, b.simplex) * signed_volume(corners);
+            cones += cone;
+            magnitude += std::abs(cone);
+        }
+        for (Index s : simplices[c]) {
+            for (int k = 0; k <= d; ++k) {
+                const Index v = mesh.simplices(s, k);
+                corners.col(k) = row_of[v] < 0 ? origin : Eigen::VectorXd(scaled.row(row_of[v]));
+            }
+            collapsed += rest_orientation(mesh, rest, s) * signed_volume(corners);
+        }
+        if (!(std::abs(cones - collapsed) <= 1e-9 * magnitude)) continue;  // not decided
+        FixedBoundaryPart p;
+        p.dimension = d;
+        p.simplices = Index(simplices[c].size());
+        p.first_simplex = simplices[c].front();
+        p.volume = cones / factorial / std::pow(scale, d);
+        p.encloses_volume = cones > 1e-12 * magnitude;
+        bool fails = !p.encloses_volume;
+
+        if (d == 2 && scaled.cols() == 2) {
+            // The boundary loops, each edge directed with its triangle's rest orientation.
+            bool loops = true;
+            for (Index f : facets[c]) {
+                const BoundaryFacet& b = topology.boundary_facets[f];
+                Index from = mesh.simplices(b.simplex, (b.opposite + 1) % 3);
+                Index to = mesh.simplices(b.simplex, (b.opposite + 2) % 3);
+                if (rest_orientation(mesh, rest, b.simplex) < 0.0) std::swap(from, to);
+                loops = loops && next[from] < 0;
+                next[from] = to;
+            }
+            double turning = 0.0;
+            for (Index f : facets[c]) {
+                if (!loops) break;
+                const Index start = topology.boundary_facets[f].vertices[0];
+                if (seen[start]) continue;
+                Index v = start;
+                do {
+                    seen[v] = 1;
+                    const Index u = next[v], w = u >= 0 ? next[u] : -1;
+                    if (w < 0) {
+                        loops = false;
+                        break;
+                    }
+                    const Eigen::Vector2d a =
+                        (scaled.row(row_of[u]) - scaled.row(row_of[v])).transpose();
+                    const Eigen::Vector2d e =
+                        (scaled.row(row_of[w]) - scaled.row(row_of[u])).transpose();
+                    if (a.squaredNorm() == 0.0 || e.squaredNorm() == 0.0) loops = false;
+                    turning += std::atan2(a.x() * e.y() - a.y() * e.x(), a.dot(e));
+                    v = u;
+                } while (loops && v != start);
+            }
+            if (loops) {
+                Index vertices = 0;
+                for (Index s : simplices[c])
+                    for (int k = 0; k < 3; ++k)
+                        if (!used[mesh.simplices(s, k)]) {
+                            used[mesh.simplices(s, k)] = 1;
+                            ++vertices;
+                        }
+                const Index edges = (3 * p.simplices + Index(facets[c].size())) / 2;
+                p.turning_measured = true;
+                p.turning = int(std::lround(turning / (2.0 * M_PI)));
+                p.euler = vertices - edges + p.simplices;
+                fails = fails || p.turning < p.euler;
+            }
+            for (Index f : facets[c]) {
+                for (int k = 0; k < 2; ++k) {
+                    next[topology.boundary_facets[f].vertices[k]] = -1;
+                    seen[topology.boundary_facets[f].vertices[k]] = 0;
+                }
+            }
+            for (Index s : simplices[c])
+                for (int k = 0; k < 3; ++k) used[mesh.simplices(s, k)] = 0;
+        }
+        if (fails) failing.push_back(p);
+    }
+    return failing;
+}
+
 }  // namespace
 
 std::string HandleFeasibility::describe(std::size_t shown) const {
@@ -81,6 +209,22 @@ std::string HandleFeasibility::describe(std::size_t shown) const {
                                }) +
                         ")");
     }
+    for (const FixedBoundaryPart& p : enclosing) {
+        std::ostringstream out;
+        out << "the " << p.simplices << " simplices connected to simplex " << p.first_simplex
+            << " have every boundary vertex a handle, and ";
+        if (!p.encloses_volume) {
+            out << "their boundary's image encloses a signed "
+                << (p.dimension == 2 ? "area" : "volume") << " of " << p.volume
+                << " (their images' " << (p.dimension == 2 ? "areas" : "volumes")
+                << " sum to it: it must be positive)";
+        } else {
+            out << "their boundary loops turn " << p.turning
+                << " times in all, fewer than their Euler "
+                << "characteristic " << p.euler << " (a disk's boundary must turn once)";
+        }
+        parts.push_back(out.str());
+    }
     if (parts.empty()) return "the handles allow a solution";
     std::string text;
     for (const std::string& part : parts) text += (text.empty() ? "" : "; ") + part;
@@ -89,7 +233,8 @@ std::string HandleFeasibility::describe(std::size_t shown) const {
 
 HandleFeasibility check_handle_feasibility(const SimplicialMesh& mesh,
                                            const std::vector<Index>& handles,
-                                           const Eigen::MatrixXd& targets, double tolerance) {
+                                           const Eigen::MatrixXd& targets, double tolerance,
+                                           const MeshTopology* topology) {
     HandleFeasibility result;
     const int d = mesh.simplex_dimension();
     if (handles.empty()) return result;
@@ -153,6 +298,10 @@ HandleFeasibility check_handle_feasibility(const SimplicialMesh& mesh,
     result.collapsed_edges.erase(
         std::unique(result.collapsed_edges.begin(), result.collapsed_edges.end()),
         result.collapsed_edges.end());
+    // The fixed boundaries, once the simplices and edges are known to be sound (a collapsed edge
+    // or a flat fixed simplex would be counted again as a boundary enclosing nothing).
+    if (topology != nullptr && result.feasible())
+        result.enclosing = failing_fixed_boundaries(mesh, *topology, row_of, scaled, rest, scale);
     return result;
 }
 

@@ -24,6 +24,14 @@
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
 
+namespace sa {
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SeamlessResult::Times, field, cut, plain_poisson, integrable,
+                                   poisson, verification, total)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FieldRepairAttempt, rings, smoothing_steps, region_faces,
+                                   vertices_moved, largest_move, inverted, degenerate, assembled,
+                                   singularities_kept, success, time)
+}  // namespace sa
+
 namespace sa::cli {
 
 namespace {
@@ -224,26 +232,12 @@ int run_seamless_command(const SeamlessArguments& a) {
                                   {"step", it.step_length},
                                   {"time", it.cumulative_time}});
         }
-        nlohmann::json attempts = nlohmann::json::array();
-        for (const FieldRepairAttempt& t : r.repair.attempts) {
-            attempts.push_back({{"rings", t.rings},
-                                {"smoothing_steps", t.steps},
-                                {"region_faces", t.region_faces},
-                                {"vertices_moved", t.vertices_moved},
-                                {"largest_move", t.largest_move},
-                                {"inverted", t.inverted},
-                                {"degenerate", t.degenerate},
-                                {"assembled", t.assembled},
-                                {"singularities_kept", t.singularities_kept},
-                                {"success", t.success},
-                                {"time", t.time}});
-        }
         const nlohmann::json repair = {{"ran", r.repair.ran},
                                        {"success", r.repair.success},
                                        {"folded_faces", r.repair.folded_faces},
                                        {"description", r.repair.describe()},
-                                       {"attempts", attempts}};
-        const nlohmann::json report = {
+                                       {"attempts", r.repair.attempts}};
+        nlohmann::json report = {
             {"local_repair", repair},
             {"command", "seamless"},
             {"mesh", a.mesh},
@@ -277,17 +271,11 @@ int run_seamless_command(const SeamlessArguments& a) {
             {"result", verified_json(r.result)},
             {"success", r.success},
             {"message", r.message},
-            {"times",
-             {{"read", read_time},
-              {"field", r.times.field},
-              {"cut", r.times.cut},
-              {"plain_poisson", r.times.plain_poisson},
-              {"integrable", r.times.integrable},
-              {"poisson", r.times.poisson},
-              {"verification", r.times.verification},
-              {"output", output_time},
-              {"total", total.seconds()}}},
             {"peak_memory_gb", peak_memory_gb()}};
+        nlohmann::json& times = report["times"] = r.times;  // the pipeline's, then the command's
+        times["read"] = read_time;
+        times["output"] = output_time;
+        times["total"] = total.seconds();
         plan.write(a.report, [&](const std::string& path) { write_json(path, report); });
     }
     plan.commit();

@@ -4,39 +4,26 @@
 #include <cmath>
 #include <sstream>
 
+#include "optim/enum_names.h"
 #include "optim/errors.h"
 
 namespace sa {
 
+constexpr EnumName<Variant> kVariantNames[] = {
+    {Variant::kReduced, "r-SA"}, {Variant::kFull, "f-SA"}, {Variant::kVertex, "v-SA"}};
+constexpr EnumName<SolveMode> kSolveModeNames[] = {
+    {SolveMode::kAuto, "auto"}, {SolveMode::kFull, "full"}, {SolveMode::kSubmesh, "submesh"}};
+
 std::string to_string(Variant variant) {
-    switch (variant) {
-        case Variant::kReduced:
-            return "r-SA";
-        case Variant::kFull:
-            return "f-SA";
-        case Variant::kVertex:
-            return "v-SA";
-    }
-    return "unknown";
+    return enum_name(kVariantNames, variant);
 }
 
 std::string to_string(SolveMode mode) {
-    switch (mode) {
-        case SolveMode::kAuto:
-            return "auto";
-        case SolveMode::kFull:
-            return "full";
-        case SolveMode::kSubmesh:
-            return "submesh";
-    }
-    return "unknown";
+    return enum_name(kSolveModeNames, mode);
 }
 
 SolveMode parse_solve_mode(const std::string& name) {
-    for (SolveMode mode : {SolveMode::kAuto, SolveMode::kFull, SolveMode::kSubmesh}) {
-        if (to_string(mode) == name) return mode;
-    }
-    throw InvalidArgumentError("unknown mode '" + name + "' (expected auto, full or submesh)");
+    return parse_enum(kSolveModeNames, name, "mode");
 }
 
 Variant parse_variant(const std::string& name) {
@@ -54,22 +41,6 @@ SimplexEnergyOptions simplex_energy_options(const SimplexAssemblyOptions& o) {
     e.mapping_distortion = o.mapping_distortion;
     e.mu = o.mu;
     e.gamma = o.gamma;
-    return e;
-}
-
-AssemblyEngineOptions engine_options(const SimplexAssemblyOptions& o) {
-    AssemblyEngineOptions e;
-    e.lambda_min = o.lambda_min;
-    e.lambda_max = o.lambda_max;
-    e.assembly_tolerance = o.assembly_tolerance;
-    e.energy_tolerance = o.energy_tolerance;
-    e.max_iterations = o.max_iterations;
-    e.max_time_seconds = o.max_time_seconds;
-    e.projection = o.projection;
-    e.projection_epsilon = o.projection_epsilon;
-    e.translation_shift = o.translation_shift;
-    e.linear_solver = o.linear_solver;
-    e.num_threads = o.num_threads;
     return e;
 }
 
@@ -94,7 +65,7 @@ void SimplexAssemblyOptions::validate() const {
     if (!(s > 0.0) || !std::isfinite(s)) fail("s", s, "must be finite and > 0");
     if (!(gamma >= 0.0 && gamma <= 1.0)) fail("gamma", gamma, "must be in [0, 1]");
     if (!(mu >= 0.0) || !std::isfinite(mu)) fail("mu", mu, "must be finite and >= 0");
-    engine_options(*this).validate();  // the schedule's, termination's and solver's fields
+    AssemblyEngineOptions::validate();  // the schedule's, termination's and solver's fields
     if (!(handover_ratio >= 1.0)) fail("handover_ratio", handover_ratio, "must be >= 1");
     if (!(handle_tolerance > 0.0)) fail("handle_tolerance", handle_tolerance, "must be > 0");
     if (rings < 1) fail("rings", rings, "must be >= 1");

@@ -33,7 +33,11 @@ struct SimplexAssemblyOptions;
 /// "r", "f", "v" (or "reduced", "full", "vertex"); throws InvalidArgumentError otherwise.
 Variant parse_variant(const std::string& name);
 
-struct SimplexAssemblyOptions {
+/// The mesh driver's options: the engine's schedule, Hessian modification and termination
+/// (AssemblyEngineOptions: lambda_min, lambda_max, projection, projection_epsilon,
+/// translation_shift, linear_solver, assembly_tolerance, energy_tolerance, max_iterations,
+/// max_time_seconds, num_threads), and the energy, variant, stages and submeshes below.
+struct SimplexAssemblyOptions : AssemblyEngineOptions {
     // The energy E = mu E_m + E_C + lambda E~_assembly (Eq. 10).
     /// Distortion inside the barrier E_C: conformal, volumetric or isometric.
     DistortionType distortion = DistortionType::kConformal;
@@ -57,25 +61,6 @@ struct SimplexAssemblyOptions {
     std::optional<Initialization> initialization;
     std::uint64_t seed = 1;  ///< for random initial rotations
 
-    // The lambda schedule: lambda = min(lambda_min max((mu E_m + E_C) / E~, 1), lambda_max).
-    double lambda_min = 1e3;
-    double lambda_max = 1e16;
-
-    // Hessian modification.
-    /// Per-simplex block projection; the paper shifts by -kappa + 1e-8 (kShift), eigenvalue
-    /// clamping converges in fewer iterations (BENCHMARKS.md, "Departures") and is the default.
-    ProjectionMode projection = ProjectionMode::kClamp;
-    double projection_epsilon = 1e-8;
-    /// Hessian-only diagonal shift on the translations of r-SA, times lambda (step 2 of 4.4;
-    /// the paper uses 1e-6). Off by default: with many handles (a fixed boundary) Omega_s holds
-    /// many simplices, and at lambda = 1e16 a shift of 1e10 on their translations freezes them.
-    /// Measured on a 750-tet cube with its boundary as handles: with 1e-6 no convergence in 200
-    /// iterations (conformal max 1.24), with 0 converged in 24 (conformal max 1.0006, the
-    /// optimum being the identity). Redundant translations are still handled: the
-    /// regularization tau of step 3 reaches them when a factorization fails.
-    double translation_shift = 0.0;
-    LinearSolverType linear_solver = LinearSolverType::kAuto;
-
     /// Finish in vertex variables (vertex_stage.h): stop the assembly as soon as E~_assembly is
     /// below its tolerance, recover the mesh, and minimize mu E_m + E_C over its vertex positions
     /// (handles fixed) until E changes by less than energy_tolerance. When false, the paper's
@@ -90,18 +75,6 @@ struct SimplexAssemblyOptions {
     /// the first iteration whose recovered mesh is valid (whatever its energy), and no vertex
     /// stage lowers the distortion afterwards. Untangling only; the fastest path.
     bool until_valid = false;
-
-    // Termination: E~_assembly below assembly_tolerance and the relative change of E within a
-    // step below energy_tolerance (the paper's), or lambda at lambda_max and that same change
-    // below energy_tolerance (ours: the weights no longer move, so E has converged without
-    // assembling), or limits (each stage has max_iterations).
-    double assembly_tolerance = 1e-12;
-    double energy_tolerance = 1e-8;
-    int max_iterations = 200;
-    /// Wall-clock limit of the whole run in seconds (every stage and submesh takes what is left;
-    /// Newton checks it after each iteration, the submesh start after each local/global step).
-    /// When it runs out, the map reached so far is recovered, verified and reported as it is.
-    double max_time_seconds = kInfinity;
 
     /// Verification: handles must end within this fraction of the bounding-box diagonal of the
     /// initial map from their targets.
@@ -136,9 +109,6 @@ struct SimplexAssemblyOptions {
     Index auto_full_tetrahedra = 1000;
     double auto_bad_share = 0.25;
 
-    /// Worker threads; 0 = all cores. Results do not depend on it.
-    int num_threads = 0;
-
     /// The initialization actually used: `initialization` or the default for `distortion`.
     Initialization effective_initialization() const;
     /// Throws InvalidArgumentError naming the first bad field and its value.
@@ -147,9 +117,6 @@ struct SimplexAssemblyOptions {
 
 /// The per-simplex energy's options (barrier, E_m) that `options` describe.
 SimplexEnergyOptions simplex_energy_options(const SimplexAssemblyOptions& options);
-
-/// The engine's schedule, Hessian modification and termination that `options` describe.
-AssemblyEngineOptions engine_options(const SimplexAssemblyOptions& options);
 
 /// `options` with max_time_seconds set to what `budget` has left, for a stage or a submesh: at
 /// least a millisecond, so a stage that starts takes one step (it starts only while time is left).

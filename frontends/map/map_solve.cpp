@@ -138,7 +138,7 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
     SimplexAssemblyOptions assembly_options = with_time_left(options, budget);
     if (options.untangle_fallback && std::isfinite(options.max_time_seconds))
         assembly_options.max_time_seconds *= 0.5;
-    AssemblyEngineOptions schedule = engine_options(assembly_options);
+    AssemblyEngineOptions schedule = assembly_options;  // the engine's part of them
     // The 1e-6 lambda shift is meant for r-SA's few, possibly redundant translations (README.md,
     // "Where we depart from the paper").
     if (options.variant != Variant::kReduced) schedule.translation_shift = 0.0;

@@ -26,9 +26,9 @@
 #include <string>
 #include <vector>
 
+#include "frontends/map/map_options.h"
 #include "frontends/simplex_assembly/assembly_plugin.h"
 #include "frontends/simplex_assembly/engine_options.h"
-#include "frontends/map/map_options.h"
 #include "frontends/simplex_assembly/simplex_term.h"
 #include "geometry/map_quality.h"
 #include "geometry/simplicial_mesh.h"

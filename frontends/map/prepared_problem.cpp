@@ -151,11 +151,13 @@ void check_finite_affine_parts(const MappingProblem& input, const std::vector<Ma
 }
 
 /// What the handles alone decide (handle_feasibility.h): throws InfeasibleProblemError before
-/// anything is optimized when they force an inverted or flat simplex, fix a vertex at two places
-/// or collapse a rest edge; a vertex listed twice at one place is a malformed list (InputError).
+/// anything is optimized when they force an inverted or flat simplex, fix a vertex at two places,
+/// collapse a rest edge or fix a boundary that encloses nothing; a vertex listed twice at one place
+/// is a malformed list (InputError).
 void require_feasible_handles(const MappingProblem& p, const Eigen::MatrixXd& targets,
-                              double tolerance) {
-    const HandleFeasibility f = check_handle_feasibility(p.mesh, p.handles, targets, tolerance);
+                              double tolerance, const MeshTopology& topology) {
+    const HandleFeasibility f =
+        check_handle_feasibility(p.mesh, p.handles, targets, tolerance, &topology);
     if (!f.feasible()) throw InfeasibleProblemError(p.source, f);
     std::set<Index> seen;
     for (Index h : p.handles) {
@@ -301,7 +303,8 @@ std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
                                     : Eigen::RowVectorXd(p->initial_map.row(input.handles[k]));
     }
     require_feasible_handles(input, p->target_rows,
-                             options.handle_tolerance * bounding_box_diagonal(p->initial_map));
+                             options.handle_tolerance * bounding_box_diagonal(p->initial_map),
+                             p->topology);
 
     // Normalize by the rest diagonal; each side centred on its own bounding box.
     p->scale = 1.0 / bounding_box_diagonal(original.vertices);

@@ -4,8 +4,8 @@
 #include <cstdio>
 
 #include "energies/boundary_angle_energy.h"
-#include "frontends/simplex_assembly/engine.h"
 #include "frontends/map/vertex_descent.h"
+#include "frontends/simplex_assembly/engine.h"
 #include "geometry/map_quality.h"
 #include "optim/time_budget.h"
 
@@ -132,9 +132,7 @@ VertexStage run_once(const SimplicialMesh& mesh, const RestFrames<D>& frames,
         result.positions = start;
         return result;
     }
-    AssemblyHooks hooks;
-    hooks.logger = logger;
-    AssemblyRun run = engine.run(engine_options(options), hooks);
+    AssemblyRun run = engine.run(options, {.logger = logger});
     result.newton = std::move(run.newton);
     result.stop = run.stop;
     result.ran = true;

@@ -4,6 +4,15 @@
 
 namespace sa {
 
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FixedBoundaryPart, dimension, simplices, first_simplex, volume,
+                                   encloses_volume, turning_measured, turning, euler)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SubmeshRound, round, bad_simplices, regions, colors, solved,
+                                   failed, remaining, time)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(StageTimes, setup, disassembly, optimization, recovery,
+                                   vertex_stage, verification, total)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PhaseTimes, setup, evaluate, project, assemble, analyze,
+                                   factorize, solve, line_search, callbacks, total)
+
 namespace {
 /// JSON has no infinity: write it as null.
 nlohmann::json number(double v) {
@@ -54,7 +63,8 @@ nlohmann::json infeasible_report(const MappingProblem& problem,
                             {"inverted_simplices", f.inverted},
                             {"flat_simplices", f.flat},
                             {"conflicts", conflicts},
-                            {"collapsed_edge_list", f.collapsed_edges}};
+                            {"collapsed_edge_list", f.collapsed_edges},
+                            {"fixed_boundaries", f.enclosing}};
     return report;
 }
 
@@ -106,17 +116,6 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
     report["mode"] = to_string(r.mode);
     if (r.mode == SolveMode::kSubmesh) {
         const SubmeshStats& m = r.submesh;
-        nlohmann::json rounds = nlohmann::json::array();
-        for (const SubmeshRound& x : m.rounds) {
-            rounds.push_back({{"round", x.round},
-                              {"bad_simplices", x.bad_simplices},
-                              {"regions", x.regions},
-                              {"colors", x.colors},
-                              {"solved", x.solved},
-                              {"failed", x.failed},
-                              {"remaining", x.remaining},
-                              {"time", x.time}});
-        }
         report["submesh"] = {
             {"start", m.start},
             {"start_bad", m.start_bad},
@@ -125,7 +124,7 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
             {"start_rejected", m.start_rejected},
             {"start_untangle_iterations", m.start_untangle_iterations},
             {"start_untangle", m.start_untangle},
-            {"rounds", rounds},
+            {"rounds", m.rounds},
             {"solves", m.solves},
             {"iterations", m.iterations},
             {"largest_submesh", m.largest_submesh},
@@ -172,24 +171,8 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
         iterations.push_back(row);
     }
     report["iterations"] = iterations;
-    const PhaseTimes& p = r.newton.times;
-    report["times"] = {{"setup", r.times.setup},
-                       {"disassembly", r.times.disassembly},
-                       {"optimization", r.times.optimization},
-                       {"recovery", r.times.recovery},
-                       {"vertex_stage", r.times.vertex_stage},
-                       {"verification", r.times.verification},
-                       {"total", r.times.total},
-                       {"newton_phases",
-                        {{"setup", p.setup},
-                         {"evaluate", p.evaluate},
-                         {"project", p.project},
-                         {"assemble", p.assemble},
-                         {"analyze", p.analyze},
-                         {"factorize", p.factorize},
-                         {"solve", p.solve},
-                         {"line_search", p.line_search},
-                         {"callbacks", p.callbacks}}}};
+    report["times"] = r.times;
+    report["times"]["newton_phases"] = r.newton.times;
     return report;
 }
 

@@ -1,39 +1,32 @@
 #include "frontends/param/parameterization.h"
 
+#include <optional>
 #include <sstream>
 
 #include "geometry/boundary_fans.h"
 #include "geometry/boundary_loops.h"
+#include "geometry/hole_filling.h"
 #include "geometry/initial_maps.h"
 #include "geometry/map_quality.h"
 #include "geometry/rest_frames.h"
+#include "optim/enum_names.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
 #include "optim/time_budget.h"
 
 namespace sa {
 
+constexpr EnumName<InitialMap> kInitialMapNames[] = {{InitialMap::kLscm, "lscm"},
+                                                     {InitialMap::kTutte, "tutte"},
+                                                     {InitialMap::kTutteUniform, "tutte-uniform"},
+                                                     {InitialMap::kHarmonic, "harmonic"}};
+
 std::string to_string(InitialMap map) {
-    switch (map) {
-        case InitialMap::kLscm:
-            return "lscm";
-        case InitialMap::kTutte:
-            return "tutte";
-        case InitialMap::kTutteUniform:
-            return "tutte-uniform";
-        case InitialMap::kHarmonic:
-            return "harmonic";
-    }
-    return "unknown";
+    return enum_name(kInitialMapNames, map);
 }
 
 InitialMap parse_initial_map(const std::string& name) {
-    for (InitialMap m : {InitialMap::kLscm, InitialMap::kTutte, InitialMap::kTutteUniform,
-                         InitialMap::kHarmonic}) {
-        if (to_string(m) == name) return m;
-    }
-    throw InvalidArgumentError("unknown initial map '" + name +
-                               "' (expected lscm, tutte, tutte-uniform or harmonic)");
+    return parse_enum(kInitialMapNames, name, "initial map");
 }
 
 ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::string& source,
@@ -45,7 +38,15 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
     ParameterizationResult result;
     validate_mesh(mesh, source);
     const MeshTopology topology = mesh_topology(mesh, source);
-    require_disk(mesh, topology, source);
+    // The starts are computed on a disk: the mesh itself, or the mesh with its inner holes filled
+    // (hole_filling.h), of which the first #V rows are the start.
+    std::optional<FilledHoles> filled;
+    if (require_planar_surface(mesh, topology, source) > 1)
+        filled = fill_inner_holes(mesh, topology);
+    const SimplicialMesh& disk = filled ? filled->mesh : mesh;
+    const MeshTopology disk_topology = filled ? mesh_topology(disk, source) : MeshTopology{};
+    const MeshTopology& disk_adjacency = filled ? disk_topology : topology;
+    result.filled_holes = filled ? filled->holes : 0;
     if (initial_uv != nullptr) {
         if (initial_uv->rows() != mesh.num_vertices() || initial_uv->cols() < 2) {
             throw InputError(source + ": the initial map has " +
@@ -56,18 +57,19 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
     } else {
         switch (initial) {
             case InitialMap::kLscm:
-                result.initial_uv = lscm(mesh, topology);
+                result.initial_uv = lscm(disk, disk_adjacency);
                 break;
             case InitialMap::kTutte:
-                result.initial_uv = tutte_embedding(mesh, topology, TutteWeights::kMeanValue);
+                result.initial_uv = tutte_embedding(disk, disk_adjacency, TutteWeights::kMeanValue);
                 break;
             case InitialMap::kTutteUniform:
-                result.initial_uv = tutte_embedding(mesh, topology, TutteWeights::kUniform);
+                result.initial_uv = tutte_embedding(disk, disk_adjacency, TutteWeights::kUniform);
                 break;
             case InitialMap::kHarmonic:
-                result.initial_uv = harmonic_circle(mesh, topology);
+                result.initial_uv = harmonic_circle(disk, disk_adjacency);
                 break;
         }
+        result.initial_uv.conservativeResize(mesh.num_vertices(), 2);
     }
     result.initial_map_time = stage.lap();
     const std::vector<BoundaryFan> fans = boundary_fans(mesh, topology);
@@ -129,8 +131,9 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
                  : "does not verify (" + std::to_string(v.inverted) + " inverted, " +
                        std::to_string(v.degenerate) + " degenerate)");
         MappingProblem fallback_problem = problem;
-        result.fallback = fall_back_to_tutte(
-            fallback_problem, topology, with_time_left(options.solver, budget), observer, reason);
+        result.fallback =
+            fall_back_to_tutte(fallback_problem, disk, disk_adjacency,
+                               with_time_left(options.solver, budget), observer, reason);
         const StartFallback& f = result.fallback;
         const bool keep =
             f.verified() && (!v.passed() || f.solve.verification.max_distortion < v.max_distortion);
@@ -171,6 +174,10 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
         result.success = false;
     std::ostringstream message;
     message << (result.success ? "success: " : "FAILED: ");
+    if (result.filled_holes > 0) {
+        message << "the start computed with " << result.filled_holes << " inner hole"
+                << (result.filled_holes == 1 ? "" : "s") << " filled; ";
+    }
     if (result.fallback.used) {
         message << "fallback (" << result.fallback.reason << "): ";
         message << (result.fallback.verified()

@@ -1,6 +1,8 @@
 #pragma once
-// Planar parameterization of a disk-topology surface by Simplex Assembly (sections 5.1 and 5.2):
-// an initial map (LSCM, Tutte, harmonic, or one given), then Simplex Assembly with a free boundary
+// Planar parameterization of a disk-topology surface by Simplex Assembly (sections 5.1 and 5.2),
+// or of one with holes (genus 0, several boundary loops: the starts are computed with the inner
+// holes filled, hole_filling.h, and every loop stays free): an initial map (LSCM, Tutte, harmonic,
+// or one given), then Simplex Assembly with a free boundary
 // (no handles) and E_m = sum_i area_i |A_i - A_i^0|^2 (difference to the initial map) or the LSCM
 // energy, under a bound K on the conformal or isometric distortion, or the optimal bound: rounds
 // that each take the largest distortion of the previous result as the new bound, until it stops
@@ -11,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "frontends/param/start_fallback.h"
-#include "frontends/map/optimal_bound.h"
 #include "frontends/map/map_solve.h"
+#include "frontends/map/optimal_bound.h"
+#include "frontends/param/start_fallback.h"
 
 namespace sa {
 
@@ -52,6 +54,8 @@ struct ParameterizationResult {
     double reached_bound = kInfinity;  ///< the largest distortion of `uv`, in the barrier's measure
     Index boundary_violations_before = 0;  ///< boundary vertices with angle sum >= 2 pi
     Index boundary_violations_after = 0;
+    /// Inner boundary loops filled for the start (hole_filling.h; 0 for a disk).
+    Index filled_holes = 0;
     double initial_map_time = 0.0;
     double total_time = 0.0;
     /// The fallback, when the requested start's result was not kept (fallback.used).
@@ -61,7 +65,8 @@ struct ParameterizationResult {
 };
 
 /// `mesh` is the rest surface (#V x 3 or #V x 2, triangles); `initial_uv`, when not null, is the
-/// initial map (#V x 2) and `initial` is ignored. Throws InputError when the mesh is not a disk.
+/// initial map (#V x 2) and `initial` is ignored. Throws InputError when the mesh cannot lie in
+/// the plane (require_planar_surface in boundary_loops.h: closed, genus > 0, not manifold).
 ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::string& source,
                                     const Eigen::MatrixXd* initial_uv, InitialMap initial,
                                     const ParameterizationOptions& options,

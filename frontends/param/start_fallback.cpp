@@ -19,7 +19,8 @@ MapQuality start_quality(const SimplicialMesh& mesh, const Eigen::MatrixXd& uv) 
 
 }  // namespace
 
-StartFallback fall_back_to_tutte(const MappingProblem& problem, const MeshTopology& topology,
+StartFallback fall_back_to_tutte(const MappingProblem& problem, const SimplicialMesh& disk,
+                                 const MeshTopology& disk_topology,
                                  const SimplexAssemblyOptions& solver,
                                  const SimplexAssemblyObserver& observer, std::string reason) {
     Stopwatch watch;
@@ -32,7 +33,8 @@ StartFallback fall_back_to_tutte(const MappingProblem& problem, const MeshTopolo
         TriedStart tried;
         tried.name = weights == TutteWeights::kMeanValue ? "tutte" : "tutte-uniform";
         MappingProblem start = problem;
-        start.initial = tutte_embedding(problem.mesh, topology, weights);
+        start.initial =
+            tutte_embedding(disk, disk_topology, weights).topRows(problem.mesh.num_vertices());
         log_line(observer.logger, "fallback: start from " + tried.name);
         std::ostringstream outcome;
         std::optional<VertexDescentResult> repaired;

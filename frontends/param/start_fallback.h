@@ -42,10 +42,13 @@ struct StartFallback {
     bool verified() const { return !start.empty(); }
 };
 
-/// Runs the fallback on the disk `problem.mesh` (its topology `topology`) with the solver's
-/// options; `problem` supplies the boundary barrier flag and the source name. Keeps the first
-/// start whose result verifies within the bound, else the verified one of least distortion.
-StartFallback fall_back_to_tutte(const MappingProblem& problem, const MeshTopology& topology,
+/// Runs the fallback on `problem.mesh` with the solver's options; `problem` supplies the boundary
+/// barrier flag and the source name. The Tutte starts are computed on `disk` (its topology
+/// `disk_topology`): problem.mesh itself when it is a disk, or it with its inner holes filled
+/// (hole_filling.h), whose first #V rows are the start. Keeps the first start whose result
+/// verifies within the bound, else the verified one of least distortion.
+StartFallback fall_back_to_tutte(const MappingProblem& problem, const SimplicialMesh& disk,
+                                 const MeshTopology& disk_topology,
                                  const SimplexAssemblyOptions& solver,
                                  const SimplexAssemblyObserver& observer, std::string reason);
 

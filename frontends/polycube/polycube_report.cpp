@@ -6,6 +6,10 @@
 
 namespace sa {
 
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LabelCleanupReport, charts_before, charts_after, merged_small,
+                                   merged_few_neighbours, merged_opposite, teeth, triangles_changed,
+                                   rounds, clean)
+
 namespace {
 
 /// JSON has no infinity: null instead.
@@ -40,16 +44,7 @@ nlohmann::json polycube_preparation_json(const PreparedPolycube& p) {
                                 {"inward", p.convention->inward},
                                 {"negative_tets", p.convention->negative_tets}};
     }
-    if (p.cleanup) {
-        const LabelCleanupReport& c = *p.cleanup;
-        labels["cleanup"] = {{"charts_before", c.charts_before},
-                             {"charts_after", c.charts_after},
-                             {"merged_small", c.merged_small},
-                             {"merged_few_neighbours", c.merged_few_neighbours},
-                             {"merged_opposite", c.merged_opposite},
-                             {"triangles_changed", c.triangles_changed},
-                             {"rounds", c.rounds}};
-    }
+    if (p.cleanup) labels["cleanup"] = *p.cleanup;
     j["labels"] = labels;
     j["splits"] = {{"squashed_before", squashed_json(p.splits.before)},
                    {"squashed_after", squashed_json(p.splits.after)},

@@ -34,9 +34,9 @@
 #include <string>
 #include <vector>
 
-#include "frontends/polycube/polycube_preparation.h"
-#include "frontends/map/optimal_bound.h"
 #include "frontends/map/map_solve.h"
+#include "frontends/map/optimal_bound.h"
+#include "frontends/polycube/polycube_preparation.h"
 
 namespace sa {
 

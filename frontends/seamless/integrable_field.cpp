@@ -76,9 +76,7 @@ IntegrableField integrable_field(const SimplicialMesh& mesh, const MeshTopology&
                              std::to_string(start_assembly) + "): kept as it is");
         return result;
     }
-    AssemblyHooks hooks;
-    hooks.logger = logger;
-    AssemblyRun run = engine.run(options, hooks);
+    AssemblyRun run = engine.run(options, {.logger = logger});
     result.newton = std::move(run.newton);
     result.stop = run.stop;
     result.assembly = run.final_assembly;

@@ -71,7 +71,7 @@ std::string FieldRepair::describe() const {
     if (!attempts.empty()) {
         const FieldRepairAttempt& a = attempts.back();
         out << ", the last smoothing " << a.vertices_moved << " vertices of a region of "
-            << a.region_faces << " faces (" << a.rings << " rings) by " << a.steps
+            << a.region_faces << " faces (" << a.rings << " rings) by " << a.smoothing_steps
             << " Laplacian steps for the field only (largest move " << a.largest_move
             << " of the diagonal; the surface keeps its positions): " << a.inverted << " inverted, "
             << a.degenerate << " degenerate, " << (a.assembled ? "assembled" : "not assembled")
@@ -120,7 +120,7 @@ SeamlessResult repair_folded_field(const SeamlessResult& failed, const SeamlessO
         Stopwatch watch;
         FieldRepairAttempt attempt;
         attempt.rings = schedule.rings;
-        attempt.steps = schedule.steps;
+        attempt.smoothing_steps = schedule.steps;
         const std::vector<Index> region = grow_rings(mesh, topology, seeds, schedule.rings);
         attempt.region_faces = static_cast<Index>(region.size());
         // Movable: every face around the vertex is in the region, and it is not on the boundary.

@@ -30,7 +30,7 @@ struct SeamlessOptions;
 
 struct FieldRepairAttempt {
     int rings = 0;
-    int steps = 0;  ///< Laplacian smoothing steps
+    int smoothing_steps = 0;  ///< Laplacian smoothing steps
     Index region_faces = 0;
     Index vertices_moved = 0;
     double largest_move = 0.0;  ///< over the bounding-box diagonal of the surface

@@ -5,37 +5,27 @@
 #include <cstdio>
 #include <sstream>
 
+#include "optim/enum_names.h"
 #include "optim/newton_solver.h"
 #include "optim/stopwatch.h"
 
 namespace sa {
 
+constexpr EnumName<AssemblyStop> kAssemblyStopNames[] = {
+    {AssemblyStop::kAssembled, "assembled"},
+    {AssemblyStop::kConvergedAtLambdaMax, "converged at lambda_max"},
+    {AssemblyStop::kConverged, "converged"},
+    {AssemblyStop::kHook, "stopped by the front-end"},
+    {AssemblyStop::kNoFreeVariables, "no free variables"},
+    {AssemblyStop::kMaxIterations, "max iterations"},
+    {AssemblyStop::kMaxTime, "time limit"},
+    {AssemblyStop::kLineSearchFailed, "line search failed"},
+    {AssemblyStop::kFactorizationFailed, "factorization failed"},
+    {AssemblyStop::kInfeasibleStart, "infeasible start"},
+    {AssemblyStop::kNonFinite, "non-finite"}};
+
 std::string to_string(AssemblyStop stop) {
-    switch (stop) {
-        case AssemblyStop::kAssembled:
-            return "assembled";
-        case AssemblyStop::kConvergedAtLambdaMax:
-            return "converged at lambda_max";
-        case AssemblyStop::kConverged:
-            return "converged";
-        case AssemblyStop::kHook:
-            return "stopped by the front-end";
-        case AssemblyStop::kNoFreeVariables:
-            return "no free variables";
-        case AssemblyStop::kMaxIterations:
-            return "max iterations";
-        case AssemblyStop::kMaxTime:
-            return "time limit";
-        case AssemblyStop::kLineSearchFailed:
-            return "line search failed";
-        case AssemblyStop::kFactorizationFailed:
-            return "factorization failed";
-        case AssemblyStop::kInfeasibleStart:
-            return "infeasible start";
-        case AssemblyStop::kNonFinite:
-            return "non-finite";
-    }
-    return "unknown";
+    return enum_name(kAssemblyStopNames, stop);
 }
 
 void AssemblyEngineOptions::validate() const {

@@ -262,13 +262,23 @@ TEST_F(SaCommand, ParamWritesAVerifiedUvMapAndRejectsANonDisk) {
     Eigen::MatrixXi holed(kept.size(), 3);
     for (std::size_t k = 0; k < kept.size(); ++k) holed.row(k) = mesh.simplices.row(kept[k]);
     write_mesh_file(path("annulus.off"), lifted, holed);
+    const Outcome annulus = sa("param --mesh " + path("annulus.off") + " --out " +
+                               path("annulus-uv.obj") + " --report " + path("annulus.json"));
+    EXPECT_EQ(annulus.status, 0) << annulus.err;
+    EXPECT_NE(annulus.out.find("1 inner hole filled"), std::string::npos) << annulus.out;
+    const nlohmann::json report = nlohmann::json::parse(read(path("annulus.json")));
+    EXPECT_EQ(report["parameterization"]["filled_holes"].get<int>(), 1);
+    EXPECT_TRUE(report["parameterization"]["success"].get<bool>());
+
+    // A closed surface cannot lie in the plane.
+    const SimplicialMesh sphere = sphere_triangles(3);
+    write_mesh_file(path("sphere.off"), sphere.vertices, sphere.simplices);
     const Outcome bad =
-        sa("param --mesh " + path("annulus.off") + " --out " + path("annulus-uv.obj"));
+        sa("param --mesh " + path("sphere.off") + " --out " + path("sphere-uv.obj"));
     EXPECT_EQ(bad.status, 2);
     EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
-    EXPECT_NE(bad.err.find("annulus.off: the mesh has 2 boundary loops"), std::string::npos)
-        << bad.err;
-    EXPECT_FALSE(fs::exists(path("annulus-uv.obj")));
+    EXPECT_NE(bad.err.find("sphere.off: the mesh is closed"), std::string::npos) << bad.err;
+    EXPECT_FALSE(fs::exists(path("sphere-uv.obj")));
 }
 
 TEST_F(SaCommand, SeamlessWritesAVerifiedMapItsPictureAndRejectsABadField) {

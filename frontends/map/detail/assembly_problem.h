@@ -23,9 +23,9 @@
 #include <utility>
 #include <vector>
 
+#include "frontends/map/map_options.h"
 #include "frontends/simplex_assembly/assembly_plugin.h"
 #include "frontends/simplex_assembly/engine.h"
-#include "frontends/map/map_options.h"
 #include "frontends/simplex_assembly/simplex_term.h"
 #include "geometry/boundary_fans.h"
 #include "geometry/mesh_topology.h"
