@@ -132,7 +132,7 @@ VertexStage run_once(const SimplicialMesh& mesh, const RestFrames<D>& frames,
         result.positions = start;
         return result;
     }
-    AssemblyRun run = engine.run(options, {.logger = logger});
+    AssemblyRun run = engine.run(options, {.logger = logger, .after_iteration = {}});
     result.newton = std::move(run.newton);
     result.stop = run.stop;
     result.ran = true;

@@ -76,7 +76,7 @@ IntegrableField integrable_field(const SimplicialMesh& mesh, const MeshTopology&
                              std::to_string(start_assembly) + "): kept as it is");
         return result;
     }
-    AssemblyRun run = engine.run(options, {.logger = logger});
+    AssemblyRun run = engine.run(options, {.logger = logger, .after_iteration = {}});
     result.newton = std::move(run.newton);
     result.stop = run.stop;
     result.assembly = run.final_assembly;
