@@ -8,6 +8,10 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FixedBoundaryPart, dimension, simplices, firs
                                    encloses_volume, turning_measured, turning, euler)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SubmeshRound, round, bad_simplices, regions, colors, solved,
                                    failed, remaining, time)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SubmeshStats, start, start_iterations, start_rejected,
+                                   start_untangle_iterations, start_untangle, start_bad,
+                                   start_near_bound, rounds, solves, iterations, largest_submesh,
+                                   max_rings, out_of_time)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(StageTimes, setup, disassembly, optimization, recovery,
                                    vertex_stage, verification, total)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PhaseTimes, setup, evaluate, project, assemble, analyze,
@@ -116,22 +120,9 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
     report["mode"] = to_string(r.mode);
     if (r.mode == SolveMode::kSubmesh) {
         const SubmeshStats& m = r.submesh;
-        report["submesh"] = {
-            {"start", m.start},
-            {"start_bad", m.start_bad},
-            {"start_near_bound", m.start_near_bound},
-            {"start_iterations", m.start_iterations},
-            {"start_rejected", m.start_rejected},
-            {"start_untangle_iterations", m.start_untangle_iterations},
-            {"start_untangle", m.start_untangle},
-            {"rounds", m.rounds},
-            {"solves", m.solves},
-            {"iterations", m.iterations},
-            {"largest_submesh", m.largest_submesh},
-            {"max_rings", m.max_rings},
-            {"out_of_time", m.out_of_time},
-            {"times",
-             {{"start", m.start_time}, {"regions", m.region_time}, {"solves", m.solve_time}}}};
+        report["submesh"] = m;
+        report["submesh"]["times"] = {
+            {"start", m.start_time}, {"regions", m.region_time}, {"solves", m.solve_time}};
     }
     report["initial_quality"] = quality_json(r.initial_quality);
     report["final_quality"] = quality_json(r.final_quality);
