@@ -45,11 +45,8 @@ Index require_planar_surface(const SimplicialMesh& mesh, const MeshTopology& top
                              const std::string& source) {
     if (mesh.simplex_dimension() != 2)
         throw InputError(source + ": a parameterization needs a triangle mesh");
-    for (Index v = 0; v < mesh.num_vertices(); ++v) {
-        if (!topology.used_vertex[v]) {
-            throw InputError(source + ": vertex " + std::to_string(v) + " belongs to no triangle");
-        }
-    }
+    Index used = 0;
+    for (Index v = 0; v < mesh.num_vertices(); ++v) used += topology.used_vertex[v] ? 1 : 0;
     // A boundary vertex with two outgoing boundary edges makes the boundary non-manifold.
     std::vector<int> out_degree(mesh.num_vertices(), 0);
     for (const BoundaryFacet& f : topology.boundary_facets) {
@@ -76,8 +73,7 @@ Index require_planar_surface(const SimplicialMesh& mesh, const MeshTopology& top
                          ": the mesh is closed (no boundary); a planar parameterization needs a "
                          "disk: cut it open first");
     }
-    const long chi =
-        long(mesh.num_vertices()) - long(topology.edges.size()) + long(mesh.num_simplices());
+    const long chi = long(used) - long(topology.edges.size()) + long(mesh.num_simplices());
     if (chi != 2 - loops) {
         const long genus = (2 - long(loops) - chi) / 2;
         throw InputError(source + ": Euler characteristic " + std::to_string(chi) + " with " +

@@ -16,13 +16,14 @@ std::vector<std::vector<Index>> boundary_loops(const SimplicialMesh& mesh,
                                                const MeshTopology& topology);
 
 /// Throws InputError naming `source` unless the triangle mesh is a topological disk: manifold
-/// (checked by mesh_topology), one boundary loop, V - E + F = 1, every vertex used.
+/// (checked by mesh_topology), one boundary loop, V - E + F = 1 (V: the vertices of triangles).
 void require_disk(const SimplicialMesh& mesh, const MeshTopology& topology,
                   const std::string& source);
 
 /// Throws InputError naming `source` unless the triangle mesh can lie in the plane: manifold,
-/// connected (over shared edges), at least one boundary loop, genus 0 (V - E + F = 2 - loops: a disk, an annulus, a disk with
-/// holes), every vertex used. Returns the number of boundary loops.
+/// connected (over shared edges), at least one boundary loop, genus 0 (V - E + F = 2 - loops: a
+/// disk, an annulus, a disk with holes; V counts the vertices of triangles: others are allowed).
+/// Returns the number of boundary loops.
 Index require_planar_surface(const SimplicialMesh& mesh, const MeshTopology& topology,
                              const std::string& source);
 

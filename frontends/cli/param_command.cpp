@@ -272,6 +272,7 @@ int run_param_command(const ParamArguments& a) {
             {"reached_bound", std::isfinite(r.reached_bound) ? nlohmann::json(r.reached_bound)
                                                              : nlohmann::json(nullptr)},
             {"filled_holes", r.filled_holes},
+            {"unused_vertices", r.unused_vertices},
             {"boundary_violations_before", r.boundary_violations_before},
             {"boundary_violations_after", r.boundary_violations_after},
             {"success", r.success},

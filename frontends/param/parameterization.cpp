@@ -1,11 +1,11 @@
 #include "frontends/param/parameterization.h"
 
-#include <optional>
+#include "frontends/param/start_disk.h"
+
 #include <sstream>
 
 #include "geometry/boundary_fans.h"
 #include "geometry/boundary_loops.h"
-#include "geometry/hole_filling.h"
 #include "geometry/initial_maps.h"
 #include "geometry/map_quality.h"
 #include "geometry/rest_frames.h"
@@ -38,15 +38,10 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
     ParameterizationResult result;
     validate_mesh(mesh, source);
     const MeshTopology topology = mesh_topology(mesh, source);
-    // The starts are computed on a disk: the mesh itself, or the mesh with its inner holes filled
-    // (hole_filling.h), of which the first #V rows are the start.
-    std::optional<FilledHoles> filled;
-    if (require_planar_surface(mesh, topology, source) > 1)
-        filled = fill_inner_holes(mesh, topology);
-    const SimplicialMesh& disk = filled ? filled->mesh : mesh;
-    const MeshTopology disk_topology = filled ? mesh_topology(disk, source) : MeshTopology{};
-    const MeshTopology& disk_adjacency = filled ? disk_topology : topology;
-    result.filled_holes = filled ? filled->holes : 0;
+    require_planar_surface(mesh, topology, source);
+    const StartDisk disk = start_disk(mesh, topology, source);
+    result.filled_holes = disk.filled_holes;
+    result.unused_vertices = disk.unused_vertices;
     if (initial_uv != nullptr) {
         if (initial_uv->rows() != mesh.num_vertices() || initial_uv->cols() < 2) {
             throw InputError(source + ": the initial map has " +
@@ -55,21 +50,22 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
         }
         result.initial_uv = initial_uv->leftCols(2);
     } else {
+        Eigen::MatrixXd uv;
         switch (initial) {
             case InitialMap::kLscm:
-                result.initial_uv = lscm(disk, disk_adjacency);
+                uv = lscm(disk.mesh, disk.topology);
                 break;
             case InitialMap::kTutte:
-                result.initial_uv = tutte_embedding(disk, disk_adjacency, TutteWeights::kMeanValue);
+                uv = tutte_embedding(disk.mesh, disk.topology, TutteWeights::kMeanValue);
                 break;
             case InitialMap::kTutteUniform:
-                result.initial_uv = tutte_embedding(disk, disk_adjacency, TutteWeights::kUniform);
+                uv = tutte_embedding(disk.mesh, disk.topology, TutteWeights::kUniform);
                 break;
             case InitialMap::kHarmonic:
-                result.initial_uv = harmonic_circle(disk, disk_adjacency);
+                uv = harmonic_circle(disk.mesh, disk.topology);
                 break;
         }
-        result.initial_uv.conservativeResize(mesh.num_vertices(), 2);
+        result.initial_uv = disk.to_surface(uv);
     }
     result.initial_map_time = stage.lap();
     const std::vector<BoundaryFan> fans = boundary_fans(mesh, topology);
@@ -131,9 +127,8 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
                  : "does not verify (" + std::to_string(v.inverted) + " inverted, " +
                        std::to_string(v.degenerate) + " degenerate)");
         MappingProblem fallback_problem = problem;
-        result.fallback =
-            fall_back_to_tutte(fallback_problem, disk, disk_adjacency,
-                               with_time_left(options.solver, budget), observer, reason);
+        result.fallback = fall_back_to_tutte(
+            fallback_problem, disk, with_time_left(options.solver, budget), observer, reason);
         const StartFallback& f = result.fallback;
         const bool keep =
             f.verified() && (!v.passed() || f.solve.verification.max_distortion < v.max_distortion);
@@ -177,6 +172,10 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
     if (result.filled_holes > 0) {
         message << "the start computed with " << result.filled_holes << " inner hole"
                 << (result.filled_holes == 1 ? "" : "s") << " filled; ";
+    }
+    if (result.unused_vertices > 0) {
+        message << result.unused_vertices << " vertices belong to no triangle (left out, written "
+                << "at the centroid of the others); ";
     }
     if (result.fallback.used) {
         message << "fallback (" << result.fallback.reason << "): ";

@@ -56,6 +56,8 @@ struct ParameterizationResult {
     Index boundary_violations_after = 0;
     /// Inner boundary loops filled for the start (hole_filling.h; 0 for a disk).
     Index filled_holes = 0;
+    /// Vertices of the mesh that belong to no triangle: left out of the map (start_disk.h).
+    Index unused_vertices = 0;
     double initial_map_time = 0.0;
     double total_time = 0.0;
     /// The fallback, when the requested start's result was not kept (fallback.used).

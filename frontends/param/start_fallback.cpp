@@ -19,8 +19,7 @@ MapQuality start_quality(const SimplicialMesh& mesh, const Eigen::MatrixXd& uv) 
 
 }  // namespace
 
-StartFallback fall_back_to_tutte(const MappingProblem& problem, const SimplicialMesh& disk,
-                                 const MeshTopology& disk_topology,
+StartFallback fall_back_to_tutte(const MappingProblem& problem, const StartDisk& disk,
                                  const SimplexAssemblyOptions& solver,
                                  const SimplexAssemblyObserver& observer, std::string reason) {
     Stopwatch watch;
@@ -33,8 +32,7 @@ StartFallback fall_back_to_tutte(const MappingProblem& problem, const Simplicial
         TriedStart tried;
         tried.name = weights == TutteWeights::kMeanValue ? "tutte" : "tutte-uniform";
         MappingProblem start = problem;
-        start.initial =
-            tutte_embedding(disk, disk_topology, weights).topRows(problem.mesh.num_vertices());
+        start.initial = disk.to_surface(tutte_embedding(disk.mesh, disk.topology, weights));
         log_line(observer.logger, "fallback: start from " + tried.name);
         std::ostringstream outcome;
         std::optional<VertexDescentResult> repaired;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "frontends/map/vertex_descent.h"
+#include "frontends/param/start_disk.h"
 #include "geometry/mesh_topology.h"
 
 namespace sa {
@@ -43,12 +44,10 @@ struct StartFallback {
 };
 
 /// Runs the fallback on `problem.mesh` with the solver's options; `problem` supplies the boundary
-/// barrier flag and the source name. The Tutte starts are computed on `disk` (its topology
-/// `disk_topology`): problem.mesh itself when it is a disk, or it with its inner holes filled
-/// (hole_filling.h), whose first #V rows are the start. Keeps the first start whose result
-/// verifies within the bound, else the verified one of least distortion.
-StartFallback fall_back_to_tutte(const MappingProblem& problem, const SimplicialMesh& disk,
-                                 const MeshTopology& disk_topology,
+/// barrier flag and the source name. The Tutte starts are computed on `disk` (start_disk.h).
+/// Keeps the first start whose result verifies within the bound, else the verified one of least
+/// distortion.
+StartFallback fall_back_to_tutte(const MappingProblem& problem, const StartDisk& disk,
                                  const SimplexAssemblyOptions& solver,
                                  const SimplexAssemblyObserver& observer, std::string reason);
 

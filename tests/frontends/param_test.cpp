@@ -72,6 +72,35 @@ TEST(Parameterization, BoundaryBarrierKeepsBoundaryAngleSumsBelow2Pi) {
         EXPECT_LT(theta, 2.0 * M_PI);
 }
 
+TEST(Parameterization, VerticesOfNoTriangleAreLeftOutOfTheMap) {
+    // A helicoid (a disk) with two vertices no triangle uses, one first and one last, and a
+    // hole: every start is computed without them, and they do not enter the map.
+    const SimplicialMesh disk = helicoid(24, 6);
+    SimplicialMesh mesh;
+    mesh.vertices.resize(disk.num_vertices() + 2, 3);
+    mesh.vertices.row(0) << 5.0, 5.0, 5.0;
+    mesh.vertices.middleRows(1, disk.num_vertices()) = disk.vertices;
+    mesh.vertices.bottomRows(1) << -7.0, 0.0, 1.0;
+    std::vector<Eigen::Vector3i> kept;
+    for (Index f = 0; f < disk.num_simplices(); ++f) {
+        if (f == 60 || f == 61) continue;  // two triangles of the second ring: a hole
+        kept.push_back(disk.simplices.row(f).transpose().array() + 1);
+    }
+    mesh.simplices.resize(Index(kept.size()), 3);
+    for (std::size_t f = 0; f < kept.size(); ++f)
+        mesh.simplices.row(Index(f)) = kept[f].transpose();
+    for (InitialMap start : {InitialMap::kLscm, InitialMap::kTutte}) {
+        const ParameterizationResult r =
+            parameterize(mesh, "loose", nullptr, start, conformal_options());
+        EXPECT_TRUE(r.success) << r.message;
+        EXPECT_EQ(r.unused_vertices, 2);
+        EXPECT_EQ(r.uv.rows(), mesh.num_vertices());
+        EXPECT_TRUE(r.uv.allFinite());
+        EXPECT_NE(r.message.find("2 vertices belong to no triangle"), std::string::npos)
+            << r.message;
+    }
+}
+
 TEST(Parameterization, FullAndSubmeshModesBothVerifyABoundedMap) {
     // A bumpy disk whose LSCM map exceeds a tight conformal bound in places.
     SimplicialMesh mesh = grid_triangles(50, 50);
