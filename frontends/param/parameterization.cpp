@@ -169,7 +169,8 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
         result.success = false;
     std::ostringstream message;
     message << (result.success ? "success: " : "FAILED: ");
-    if (result.filled_holes > 0) {
+    // A start read from a file was not computed here: the holes count only if the fallback ran.
+    if (result.filled_holes > 0 && (initial_uv == nullptr || result.fallback.used)) {
         message << "the start computed with " << result.filled_holes << " inner hole"
                 << (result.filled_holes == 1 ? "" : "s") << " filled; ";
     }
