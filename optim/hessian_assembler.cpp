@@ -42,13 +42,16 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     const int num_terms = problem.num_terms();
     // Per term, out of the loops below: its arity and its elements' variables (num_elements x
     // arity), instead of virtual calls for every incidence.
-    std::vector<int> arity(num_terms);
+    std::vector<int> arity(num_terms), block(num_terms);
     std::vector<const Index*> variables(num_terms);
     for (TermId t = 0; t < num_terms; ++t) {
         arity[t] = problem.term(t).arity();
+        block[t] = problem.term(t).hessian_block();
         variables[t] = problem.term(t).all_element_variables();
     }
     auto element_variables = [&](TermId t, Index e) { return variables[t] + e * arity[t]; };
+    // The local rows [first, first + block) that local column `local` of term t couples with.
+    auto block_first = [&](TermId t, int local) { return local - local % block[t]; };
 
     // Free variables: used by some term and not fixed, numbered in variable order.
     std::vector<unsigned char> used(n, 0);
@@ -75,7 +78,7 @@ HessianAssembler::HessianAssembler(const Problem& problem)
         gradient_offset_[t] = gradient_size;
         gradient_size += ne * N;
         hessian_offset_[t] = term.is_quadratic() ? -1 : hessian_size;
-        if (!term.is_quadratic()) hessian_size += ne * N * N;
+        if (!term.is_quadratic()) hessian_size += ne * N * term.hessian_block();
     }
     assign_prefaulted(gradient_slots_, std::size_t(gradient_size), 0.0);
     assign_prefaulted(hessian_slots_, std::size_t(hessian_size), 0.0);
@@ -126,7 +129,7 @@ HessianAssembler::HessianAssembler(const Problem& problem)
         std::vector<double> g;
         assign_prefaulted(g, std::size_t(term.num_elements()) * N, 0.0);
         std::vector<double>& h = quadratic_hessians.emplace_back();
-        assign_prefaulted(h, g.size() * N, 0.0);
+        assign_prefaulted(h, g.size() * std::size_t(term.hessian_block()), 0.0);
         term.evaluate(x, 1.0, g.data(), h.data());
         if (!term.is_convex()) term.project(x, h.data(), ProjectionMode::kClamp, 0.0);
         quadratic_index[t] = static_cast<int>(quadratic_parts_.size());
@@ -159,7 +162,8 @@ HessianAssembler::HessianAssembler(const Problem& problem)
         for (std::int64_t p = incidence_begin[j]; p < incidence_begin[j + 1]; ++p) {
             const Incidence& in = incidences[p];
             const Index* vars = element_variables(in.term, in.element);
-            for (int r = 0; r < arity[in.term]; ++r) {
+            const int first = block_first(in.term, in.local);
+            for (int r = first; r < first + block[in.term]; ++r) {
                 const Index i = free_of_variable_[vars[r]];
                 if (i > j && c.seen[i] != visit) {
                     c.seen[i] = visit;
@@ -169,16 +173,17 @@ HessianAssembler::HessianAssembler(const Problem& problem)
         }
     };
     // Visits every (element Hessian entry -> place in column j) contribution, in the fixed order
-    // (term, element, local column, local row); c.slot must hold column j's places.
+    // (term, element, local column, local row), each with its place in the term's Hessian
+    // slots (term.h); c.slot must hold column j's places.
     auto for_each_contribution = [&](Index j, const ColumnScratch& c, auto&& visit) {
         for (std::int64_t p = incidence_begin[j]; p < incidence_begin[j + 1]; ++p) {
             const Incidence& in = incidences[p];
-            const int N = arity[in.term];
             const Index* vars = element_variables(in.term, in.element);
-            for (int r = 0; r < N; ++r) {
+            const int first = block_first(in.term, in.local);
+            for (int r = first; r < first + block[in.term]; ++r) {
                 const Index i = free_of_variable_[vars[r]];
                 if (i < j) continue;
-                visit(c.slot[i], in, std::int64_t(in.local) * N + r);
+                visit(c.slot[i], in, hessian_slot(block[in.term], in.local, r));
             }
         }
     };
@@ -262,13 +267,13 @@ HessianAssembler::HessianAssembler(const Problem& problem)
                 c.quadratic_touched.assign(num_quadratic * length, 0);
                 for_each_contribution(j, c, [&](Index k, const Incidence& in, std::int64_t local) {
                     const int q = quadratic_index[in.term];
-                    const std::int64_t N = arity[in.term];
+                    const std::int64_t stride = std::int64_t(arity[in.term]) * block[in.term];
                     if (q < 0) {
                         entry_source_[c.cursor[k]++] =
-                            hessian_offset_[in.term] + std::int64_t(in.element) * N * N + local;
+                            hessian_offset_[in.term] + std::int64_t(in.element) * stride + local;
                     } else {
                         c.quadratic_value[q * length + k] +=
-                            quadratic_hessians[q][std::size_t(in.element) * N * N + local];
+                            quadratic_hessians[q][std::size_t(in.element * stride + local)];
                         c.quadratic_touched[q * length + k] = 1;
                     }
                 });

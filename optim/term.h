@@ -5,8 +5,11 @@
 // `Term` is the type-erased interface the assembler and the line search use; `EnergyTerm<E>`
 // implements it for any ElementEnergy E, with the per-element calls inlined.
 //
-// Slot layout used by evaluate()/project(): element e of a term of arity N owns
-// gradient slots [e*N, e*N + N) and Hessian slots [e*N*N, e*N*N + N*N) (column-major N x N).
+// Slot layout used by evaluate()/project(): element e of a term of arity N and Hessian block B
+// (hessian_block(), N for a dense element) owns gradient slots [e*N, e*N + N) and Hessian slots
+// [e*N*B, e*N*B + N*B): its N / B diagonal B x B blocks, each column-major, block after block
+// (for B = N, the N x N Hessian column-major). hessian_slot(N, B, column, row) gives the place
+// of an entry of a block within the element's slots.
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -15,6 +18,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <atomic>
+#include <cstdint>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -24,6 +28,12 @@
 #include "optim/hessian_projection.h"
 
 namespace sa {
+
+/// The place of entry (row, column) of an element Hessian within its slots (the layout above);
+/// row and column in the same B x B block.
+inline std::int64_t hessian_slot(int B, int column, int row) {
+    return std::int64_t(column / B) * B * B + std::int64_t(column % B) * B + row % B;
+}
 
 class Term {
   public:
@@ -47,6 +57,9 @@ class Term {
     /// Positive semidefinite Hessian everywhere: never projected (element_energy.h).
     virtual bool is_convex() const = 0;
     virtual bool has_max_step() const = 0;
+    /// B: only the element Hessian's diagonal B x B blocks are assembled (element_energy.h's
+    /// hessian_block; the arity for a dense element).
+    virtual int hessian_block() const = 0;
 
     /// Unweighted sum of the element values at `x`; +inf as soon as one element is infeasible.
     /// The sum is formed in the same order for any number of threads.
@@ -76,6 +89,7 @@ template <ElementEnergy E>
 class EnergyTerm final : public Term {
   public:
     static constexpr int N = E::arity;
+    static constexpr int B = hessian_block_of<E>();
     using Element = std::array<Index, N>;
 
     EnergyTerm(std::string name, E energy, std::vector<Element> elements, double weight)
@@ -95,6 +109,7 @@ class EnergyTerm final : public Term {
     bool is_quadratic() const override { return is_quadratic_energy<E>(); }
     bool is_convex() const override { return is_convex_energy<E>(); }
     bool has_max_step() const override { return HasMaxStep<E>; }
+    int hessian_block() const override { return hessian_block_of<E>(); }
 
     double value(const Eigen::VectorXd& x) const override {
         std::atomic<bool> infeasible{false};
@@ -134,9 +149,7 @@ class EnergyTerm final : public Term {
                     }
                     acc += v;
                     Eigen::Map<Vec<N>>(gradient_slots + std::size_t(e) * N) = scale * g;
-                    if (hessian_slots != nullptr) {
-                        Eigen::Map<Mat<N>>(hessian_slots + std::size_t(e) * N * N) = scale * h;
-                    }
+                    if (hessian_slots != nullptr) store_blocks(h, scale, hessian_slots, e);
                 }
                 return acc;
             },
@@ -150,18 +163,32 @@ class EnergyTerm final : public Term {
             range(), Index{0},
             [&](const tbb::blocked_range<Index>& r, Index changed) {
                 for (Index e = r.begin(); e != r.end(); ++e) {
-                    Eigen::Map<Mat<N>> slot(hessian_slots + std::size_t(e) * N * N);
-                    Mat<N> h = slot;
-                    bool did;
-                    if constexpr (HasOwnProjection<E>) {
+                    bool did = false;
+                    if constexpr (B == N) {
+                        Eigen::Map<Mat<N>> slot(hessian_slots + std::size_t(e) * N * N);
+                        Mat<N> h = slot;
+                        if constexpr (HasOwnProjection<E>) {
+                            did = energy_.project_hessian(e, gather(x, e), h, mode, epsilon);
+                        } else {
+                            did = project_hessian_block<N>(h, mode, epsilon);
+                        }
+                        if (did) slot = h;
+                    } else if constexpr (HasOwnProjection<E>) {
+                        Mat<N> h = Mat<N>::Zero();
+                        for (int k = 0; k < N / B; ++k)
+                            h.template block<B, B>(B * k, B * k) = block_slot(hessian_slots, e, k);
                         did = energy_.project_hessian(e, gather(x, e), h, mode, epsilon);
+                        if (did) store_blocks(h, 1.0, hessian_slots, e);
                     } else {
-                        did = project_hessian_block<N>(h, mode, epsilon);
+                        for (int k = 0; k < N / B; ++k) {
+                            Mat<B> h = block_slot(hessian_slots, e, k);
+                            if (project_hessian_block<B>(h, mode, epsilon)) {
+                                block_slot(hessian_slots, e, k) = h;
+                                did = true;
+                            }
+                        }
                     }
-                    if (did) {
-                        slot = h;
-                        ++changed;
-                    }
+                    changed += did;
                 }
                 return changed;
             },
@@ -190,6 +217,19 @@ class EnergyTerm final : public Term {
     }
 
   private:
+    /// Block k of element e's Hessian slots.
+    static Eigen::Map<Mat<B>> block_slot(double* hessian_slots, Index e, int k) {
+        return Eigen::Map<Mat<B>>(hessian_slots + std::size_t(e) * N * B + std::size_t(k) * B * B);
+    }
+    /// scale times the diagonal blocks of h into element e's slots.
+    static void store_blocks(const Mat<N>& h, double scale, double* hessian_slots, Index e) {
+        if constexpr (B == N) {
+            Eigen::Map<Mat<N>>(hessian_slots + std::size_t(e) * N * N) = scale * h;
+        } else {
+            for (int k = 0; k < N / B; ++k)
+                block_slot(hessian_slots, e, k) = scale * h.template block<B, B>(B * k, B * k);
+        }
+    }
     tbb::blocked_range<Index> range() const {
         return tbb::blocked_range<Index>(0, num_elements(), kGrain);
     }

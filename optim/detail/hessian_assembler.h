@@ -13,6 +13,9 @@
 // Quadratic terms (constant Hessian) are evaluated and projected once, at construction: each keeps
 // the entries it adds, scaled by its current weight at every assembly.
 //
+// A term whose elements declare a Hessian block B (optim/element_energy.h) contributes only its
+// element Hessians' diagonal B x B blocks, to the pattern as to the values.
+//
 // Variables that are fixed, or that no term uses, are not free: they are left out of the system.
 
 #include <Eigen/Sparse>
