@@ -30,7 +30,13 @@
 //     grad E = f' sum_k grad phi_k,   Hess E = f' sum_k Hess phi_k + f'' grad theta grad theta^T.
 // project_hessian() projects each angle's block (epsilon / f') and keeps the rank-one term: a
 // positive semidefinite Hessian for 9 x 9 or 12 x 12 eigen-decompositions instead of one of the
-// whole element.
+// whole element. In A-form the rank-one term is the only coupling between the K tetrahedra, and
+// a dense 9K x 9K element makes the Newton system's factorization several times denser (cup:
+// BENCHMARKS.md, PolyCube); so the A-forms declare hessian_block = 9 (optim/element_energy.h)
+// and their project_hessian() replaces the rank-one term by its block-diagonal majorizer
+//     f'' grad theta grad theta^T  <=  K f'' sum_k grad phi_k grad phi_k^T
+// (Cauchy-Schwarz: (sum_k g_k . z_k)^2 <= K sum_k (g_k . z_k)^2), which keeps the Newton step a
+// descent direction. value_gradient_hessian() still returns the exact Hessian.
 //
 // Sizes: the element's Hessian is a fixed-size matrix, and Eigen refuses fixed-size objects over
 // 128 KB, so an element has at most 126 variables: kMaxAngleFan = 14 tetrahedra in A-form and
@@ -122,7 +128,7 @@ template <int N, int B, class Index_, class Angle>
 double angle_sum_energy(double limit, const Vec<N>& x, int parts, const Index_& index,
                         const Angle& angle, double* theta_out, Vec<N>* dtheta_out, Vec<N>* g,
                         Mat<N>* h, const ProjectionMode* projection = nullptr, double epsilon = 0.0,
-                        bool* changed = nullptr) {
+                        bool* changed = nullptr, bool majorize_coupling = false) {
     double theta = 0.0;
     const bool derivatives = g != nullptr || dtheta_out != nullptr;
     std::vector<Dual<B>> phi(derivatives ? parts : 0);
@@ -167,7 +173,19 @@ double angle_sum_energy(double limit, const Vec<N>& x, int parts, const Index_& 
         }
     }
     *g = d1 * dtheta;
-    h->noalias() += d2 * dtheta * dtheta.transpose();
+    if (majorize_coupling) {  // the angles' blocks are disjoint (A-form)
+        for (int k = 0; k < parts; ++k) {
+            const std::array<int, B> at = index(k);
+            for (int i = 0; i < B; ++i) {
+                for (int j = 0; j < B; ++j) {
+                    (*h)(at[i], at[j]) +=
+                        double(parts) * d2 * phi[k].gradient[i] * phi[k].gradient[j];
+                }
+            }
+        }
+    } else {
+        h->noalias() += d2 * dtheta * dtheta.transpose();
+    }
     return e;
 }
 
@@ -201,13 +219,16 @@ struct AngleSumEnergyBase {
     bool project_hessian(Index e, const Vec<N>& x, Mat<N>& h, ProjectionMode mode,
                          double epsilon) const {
         if (mode == ProjectionMode::kNone) return false;
+        // Derived declares hessian_block when its angles' blocks are disjoint (the A-forms).
+        constexpr bool block_diagonal = requires { Derived::hessian_block; };
         Vec<N> g;
         bool changed = false;
         const double energy = detail::angle_sum_energy<N, B>(
             Derived::kLimit, x, self().parts(e), [&](int k) { return self().index(e, k); },
             [&](int k, const auto& y, bool* defined) { return self().angle(e, k, y, defined); },
-            nullptr, nullptr, &g, &h, &mode, epsilon, &changed);
-        return std::isfinite(energy) && changed;
+            nullptr, nullptr, &g, &h, &mode, epsilon, &changed, block_diagonal);
+        // The majorizer changes the Hessian whether or not a block was projected.
+        return std::isfinite(energy) && (changed || block_diagonal);
     }
     /// theta of element e at x (+inf when an angle is undefined), and its gradient when
     /// `gradient` is given: defined beyond the limit too, for a descent that brings theta below
@@ -242,6 +263,7 @@ std::array<int, B> contiguous_block(int k) {
 /// E_e in A-form over the K tetrahedra around a boundary edge.
 template <int K>
 struct DihedralSumEnergy : detail::AngleSumEnergyBase<DihedralSumEnergy<K>, 9 * K, 9> {
+    static constexpr int hessian_block = 9;
     static_assert(K >= 1 && K <= kMaxAngleFan);
     static constexpr double kLimit = 2.0 * M_PI;
     /// Rest vectors of one tetrahedron in its rest frame, from the edge's first vertex: the edge
@@ -295,6 +317,7 @@ struct DihedralSumVertexEnergy
 /// E_v in A-form over the K tetrahedra around a boundary vertex.
 template <int K>
 struct SolidAngleSumEnergy : detail::AngleSumEnergyBase<SolidAngleSumEnergy<K>, 9 * K, 9> {
+    static constexpr int hessian_block = 9;
     static_assert(K >= 1 && K <= kMaxAngleFan);
     static constexpr double kLimit = 4.0 * M_PI;
     /// Rest vectors of one tetrahedron in its rest frame from the vertex to its three others,

@@ -188,6 +188,37 @@ TEST(TetAngleBarriers, ProjectedHessianIsPositiveSemidefinite) {
     }
 }
 
+// In A-form the projected Hessian is block diagonal (one 9 x 9 block per tetrahedron, the only
+// part assembled) and majorizes the barrier's curvature along its gradient: with E' = E^2 and
+// E'' = 2 E^3, projected - (2 / E) g g^T = (majorizer - rank-one term) + (projected angle
+// blocks) is positive semidefinite.
+TEST(TetAngleBarriers, AFormProjectionIsABlockDiagonalMajorizer) {
+    SolidAngleSumEnergy<2> solid;
+    solid.stars.emplace_back();
+    solid.stars[0][0] = {Vec<3>(1, 0, 0), Vec<3>(0, 1, 0), Vec<3>(0, 0, 1)};
+    solid.stars[0][1] = {Vec<3>(0, 1, 0), Vec<3>(-1, 0, 0), Vec<3>(0, 0, 1)};
+    static_assert(SolidAngleSumEnergy<2>::hessian_block == 9);
+    Vec<18> identity;
+    for (int k = 0; k < 2; ++k)
+        identity.segment<9>(9 * k) = Eigen::Map<const Vec<9>>(Mat<3>::Identity().eval().data());
+    for (const unsigned seed : {1u, 2u, 3u}) {
+        const Vec<18> x = perturbed(identity, seed, 0.2);
+        Vec<18> g;
+        Mat<18> h;
+        const double e = solid.value_gradient_hessian(0, x, g, h);
+        ASSERT_TRUE(std::isfinite(e));
+        EXPECT_GT((h.block<9, 9>(9, 0).cwiseAbs().maxCoeff()), 0.0);  // the exact one couples
+        Mat<18> projected = h;
+        EXPECT_TRUE(solid.project_hessian(0, x, projected, ProjectionMode::kClamp, 1e-9));
+        EXPECT_EQ((projected.block<9, 9>(9, 0).cwiseAbs().maxCoeff()), 0.0) << seed;
+        EXPECT_EQ((projected.block<9, 9>(0, 9).cwiseAbs().maxCoeff()), 0.0) << seed;
+        const Mat<18> rest = projected - (2.0 / e) * g * g.transpose();
+        EXPECT_GE(Eigen::SelfAdjointEigenSolver<Mat<18>>(rest).eigenvalues().minCoeff(),
+                  -1e-9 * projected.norm())
+            << seed;
+    }
+}
+
 // A fan around a boundary edge that overlaps itself (theta = 400 degrees): a descent on theta
 // along its gradient brings it below 2 pi; from there, descending the barrier plus a pull back to
 // the overlapping positions keeps it below 2 pi, E finite and decreasing, however hard the pull.
