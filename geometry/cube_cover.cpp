@@ -1,5 +1,7 @@
 #include "geometry/cube_cover.h"
 
+#include "geometry/polycube_planes.h"
+
 #include <Eigen/Sparse>
 #include <numeric>
 
@@ -32,6 +34,111 @@ int find(std::vector<int>& parent, int x) {
     return x;
 }
 
+/// Minimum length of a PolyCube edge in the cube cover, as a fraction of its rest extent.
+constexpr double kMinimumEdgeFraction = 0.5;
+/// Solves after which edges still out of order are left to the untangling.
+constexpr int kMaxOrderPasses = 20;
+
+/// The cube cover's coordinate along `axis` (#V): the Dirichlet energy of x - p_axis minimized
+/// with every plane of that axis at one coordinate, plane p at tie_offset[p] from tie_root[p]
+/// (chains of ties end at a plane that is its own root), shifted so that each connected
+/// component keeps its volume-weighted mean.
+Eigen::VectorXd solve_axis(const SimplicialMesh& mesh,
+                           const std::vector<Eigen::Matrix<double, 3, 4>>& gradients,
+                           const std::vector<double>& volume, const std::vector<int>& component,
+                           const PolycubePlanes& planes, int axis,
+                           const std::vector<int>& tie_root,
+                           const std::vector<double>& tie_offset) {
+    const Index nv = mesh.num_vertices(), nt = mesh.num_simplices();
+    // Unknowns: one per free vertex, one per tied set of planes; x_v = unknown + offset[v].
+    std::vector<Index> unknown(nv, -1), unknown_of_root(planes.size(), -1);
+    Eigen::VectorXd offset = Eigen::VectorXd::Zero(nv);
+    Index n = 0;
+    for (Index v = 0; v < nv; ++v) {
+        int p = planes.plane_of_vertex[v][axis];
+        if (p < 0) {
+            unknown[v] = n++;
+            continue;
+        }
+        while (tie_root[p] != p) {
+            offset[v] += tie_offset[p];
+            p = tie_root[p];
+        }
+        if (unknown_of_root[p] < 0) unknown_of_root[p] = n++;
+        unknown[v] = unknown_of_root[p];
+    }
+    // One unknown per component is pinned at 0 (the energy does not see translations); the
+    // solution is shifted afterwards.
+    std::vector<unsigned char> pinned(n, 0);
+    {
+        std::vector<unsigned char> seen(nv, 0);
+        for (Index v = 0; v < nv; ++v) {
+            if (!seen[component[v]]) {
+                seen[component[v]] = 1;
+                pinned[unknown[v]] = 1;
+            }
+        }
+    }
+    std::vector<Index> row(n, -1);
+    Index m = 0;
+    for (Index i = 0; i < n; ++i) {
+        if (!pinned[i]) row[i] = m++;
+    }
+    // sum_T vol |G x_T - e_a|^2 = y^T K y - 2 y^T (b - K offset) + const, K_T = vol G^T G,
+    // b_T = vol G^T e_a.
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(16 * std::size_t(nt));
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
+    for (Index t = 0; t < nt; ++t) {
+        const Eigen::Matrix4d K = volume[t] * gradients[t].transpose() * gradients[t];
+        const Eigen::Vector4d b = volume[t] * gradients[t].row(axis).transpose();
+        Eigen::Vector4d o;
+        for (int i = 0; i < 4; ++i) o[i] = offset[mesh.simplices(t, i)];
+        const Eigen::Vector4d r = b - K * o;
+        for (int i = 0; i < 4; ++i) {
+            const Index ri = row[unknown[mesh.simplices(t, i)]];
+            if (ri < 0) continue;
+            rhs[ri] += r[i];
+            for (int j = 0; j < 4; ++j) {
+                const Index rj = row[unknown[mesh.simplices(t, j)]];
+                if (rj >= 0 && rj <= ri) entries.emplace_back(ri, rj, K(i, j));
+            }
+        }
+    }
+    Eigen::VectorXd solution = Eigen::VectorXd::Zero(n);
+    if (m > 0) {
+        Eigen::SparseMatrix<double> lower(m, m);
+        lower.setFromTriplets(entries.begin(), entries.end());
+        LinearSolver solver(LinearSolverType::kCholmodSupernodal, FillOrdering::kAmd);
+        solver.analyze(lower);
+        if (solver.factorize(lower) != FactorizationStatus::kSuccess) {
+            throw InvalidArgumentError(
+                "cube_cover_map: the least-squares system is singular (a rest tetrahedron is "
+                "degenerate?)");
+        }
+        const Eigen::VectorXd y = solver.solve(rhs);
+        for (Index i = 0; i < n; ++i) {
+            if (row[i] >= 0) solution[i] = y[row[i]];
+        }
+    }
+    Eigen::VectorXd x(nv);
+    for (Index v = 0; v < nv; ++v) x[v] = solution[unknown[v]] + offset[v];
+    // Shift each component so that its volume-weighted mean is the rest one.
+    std::vector<double> shift(nv, 0.0), weight(nv, 0.0);
+    for (Index t = 0; t < nt; ++t) {
+        const Index c = component[mesh.simplices(t, 0)];
+        for (int i = 0; i < 4; ++i) {
+            const Index v = mesh.simplices(t, i);
+            shift[c] += 0.25 * volume[t] * (mesh.vertices(v, axis) - x[v]);
+            weight[c] += 0.25 * volume[t];
+        }
+    }
+    for (Index v = 0; v < nv; ++v) {
+        if (weight[component[v]] > 0.0) x[v] += shift[component[v]] / weight[component[v]];
+    }
+    return x;
+}
+
 }  // namespace
 
 CubeCover cube_cover_map(const SimplicialMesh& mesh, const TetBoundary& boundary,
@@ -56,104 +163,57 @@ CubeCover cube_cover_map(const SimplicialMesh& mesh, const TetBoundary& boundary
     }
     for (Index v = 0; v < nv; ++v) component[v] = find(component, v);
 
+    const PolycubePlanes planes = polycube_planes(boundary, charts, nv);
+    const std::vector<PolycubeEdgeOrder> orders =
+        polycube_edge_orders(boundary, charts, planes, mesh.vertices);
+
     CubeCover cover;
     cover.positions = mesh.vertices;
     cover.chart_coordinate.assign(charts.size(), 0.0);
+    for (const PolycubeEdgeOrder& e : orders) {
+        ++cover.edge_orders;
+        if (e.from_plane == e.to_plane) ++cover.collapsed_edges;
+    }
     for (int axis = 0; axis < 3; ++axis) {
-        // Charts of this axis sharing a vertex form one group with one coordinate.
-        std::vector<int> group(charts.size());
-        std::iota(group.begin(), group.end(), 0);
-        std::vector<int> chart_of_vertex(nv, -1);
-        for (Index b = 0; b < boundary.size(); ++b) {
-            const int c = charts.chart_of[b];
-            if (label_axis(charts.label[c]) != axis) continue;
-            for (int i = 0; i < 3; ++i) {
-                int& mine = chart_of_vertex[boundary.triangles(b, i)];
-                if (mine < 0) {
-                    mine = c;
-                } else {
-                    const int x = find(group, mine), y = find(group, c);
-                    if (x != y) group[std::max(x, y)] = std::min(x, y);
-                }
+        // Ties between planes of this axis: plane p sits at tie_offset[p] from its tie root.
+        std::vector<int> tie_root(planes.size());
+        std::iota(tie_root.begin(), tie_root.end(), 0);
+        std::vector<double> tie_offset(planes.size(), 0.0);
+        auto root_of = [&](int p, double* offset) {
+            *offset = 0.0;
+            while (tie_root[p] != p) {
+                *offset += tie_offset[p];
+                p = tie_root[p];
             }
-        }
-        // Unknowns: one per free vertex, one per group.
-        std::vector<Index> unknown(nv, -1), unknown_of_group(charts.size(), -1);
-        Index n = 0;
-        for (Index v = 0; v < nv; ++v) {
-            if (chart_of_vertex[v] < 0) {
-                unknown[v] = n++;
-            } else {
-                const int g = find(group, chart_of_vertex[v]);
-                if (unknown_of_group[g] < 0) unknown_of_group[g] = n++;
-                unknown[v] = unknown_of_group[g];
+            return p;
+        };
+        Eigen::VectorXd x;
+        for (int pass = 0;; ++pass) {
+            x = solve_axis(mesh, gradients, volume, component, planes, axis, tie_root, tie_offset);
+            // The edges along this axis whose corners' planes are out of rest order, or closer
+            // than half their rest extent: tie their planes at that distance and solve again.
+            bool tied = false;
+            for (const PolycubeEdgeOrder& e : orders) {
+                if (pass == kMaxOrderPasses) break;
+                if (e.axis != axis || e.from_plane == e.to_plane) continue;
+                const double wanted = kMinimumEdgeFraction * e.rest_extent;
+                if (x[e.to] - x[e.from] >= wanted * (1.0 - 1e-9)) continue;
+                double from_offset, to_offset;
+                const int a = root_of(e.from_plane, &from_offset);
+                const int b = root_of(e.to_plane, &to_offset);
+                if (a == b) continue;  // tied already, at a distance that falls short
+                // c_to = c_from + wanted: c_b + to_offset = c_a + from_offset + wanted.
+                tie_root[b] = a;
+                tie_offset[b] = from_offset + wanted - to_offset;
+                ++cover.lengthened_edges;
+                tied = true;
             }
+            if (!tied) break;
         }
-        // One unknown per component is pinned (the energy does not see translations); the
-        // solution is shifted afterwards.
-        std::vector<unsigned char> pinned(n, 0);
-        {
-            std::vector<unsigned char> seen(nv, 0);
-            for (Index v = 0; v < nv; ++v) {
-                if (!seen[component[v]]) {
-                    seen[component[v]] = 1;
-                    pinned[unknown[v]] = 1;
-                }
-            }
-        }
-        std::vector<Index> row(n, -1);
-        Index m = 0;
-        for (Index i = 0; i < n; ++i) {
-            if (!pinned[i]) row[i] = m++;
-        }
-        // sum_T vol |G x_T - e_a|^2 = x^T K x - 2 x^T b + const, K_T = vol G^T G,
-        // b_T = vol G^T e_a.
-        std::vector<Eigen::Triplet<double>> entries;
-        entries.reserve(16 * std::size_t(nt));
-        Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m);
-        for (Index t = 0; t < nt; ++t) {
-            const Eigen::Matrix4d K = volume[t] * gradients[t].transpose() * gradients[t];
-            const Eigen::Vector4d b = volume[t] * gradients[t].row(axis).transpose();
-            for (int i = 0; i < 4; ++i) {
-                const Index ri = row[unknown[mesh.simplices(t, i)]];
-                if (ri < 0) continue;
-                rhs[ri] += b[i];
-                for (int j = 0; j < 4; ++j) {
-                    const Index rj = row[unknown[mesh.simplices(t, j)]];
-                    if (rj >= 0 && rj <= ri) entries.emplace_back(ri, rj, K(i, j));
-                }
-            }
-        }
-        Eigen::VectorXd solution = Eigen::VectorXd::Zero(n);
-        if (m > 0) {
-            Eigen::SparseMatrix<double> lower(m, m);
-            lower.setFromTriplets(entries.begin(), entries.end());
-            LinearSolver solver(LinearSolverType::kCholmodSupernodal, FillOrdering::kAmd);
-            solver.analyze(lower);
-            if (solver.factorize(lower) != FactorizationStatus::kSuccess) {
-                throw InvalidArgumentError(
-                    "cube_cover_map: the least-squares system is singular (a rest tetrahedron "
-                    "is degenerate?)");
-            }
-            const Eigen::VectorXd y = solver.solve(rhs);
-            for (Index i = 0; i < n; ++i) {
-                if (row[i] >= 0) solution[i] = y[row[i]];
-            }
-        }
-        Eigen::VectorXd x(nv);
-        for (Index v = 0; v < nv; ++v) x[v] = solution[unknown[v]];
-        // Shift each component so that its volume-weighted mean is the rest one.
-        std::vector<double> shift(nv, 0.0), weight(nv, 0.0);
-        for (Index t = 0; t < nt; ++t) {
-            const Index c = component[mesh.simplices(t, 0)];
-            for (int i = 0; i < 4; ++i) {
-                const Index v = mesh.simplices(t, i);
-                shift[c] += 0.25 * volume[t] * (mesh.vertices(v, axis) - x[v]);
-                weight[c] += 0.25 * volume[t];
-            }
-        }
-        for (Index v = 0; v < nv; ++v) {
-            if (weight[component[v]] > 0.0) x[v] += shift[component[v]] / weight[component[v]];
+        for (const PolycubeEdgeOrder& e : orders) {
+            if (e.axis == axis && e.from_plane != e.to_plane &&
+                !(x[e.to] - x[e.from] > 0.5 * kMinimumEdgeFraction * e.rest_extent))
+                ++cover.unordered_edges;
         }
         cover.positions.col(axis) = x;
         for (int c = 0; c < charts.size(); ++c) {

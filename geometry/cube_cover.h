@@ -11,11 +11,17 @@
 // tetrahedra: the interior follows the cotangent Laplacian, L x = L p_a away from the charts.
 // Charts of one axis that share a vertex share their coordinate. The energy does not see a
 // translation along a; the solution is shifted so that its volume-weighted mean equals that of
-// p_a in each connected component. The map may fold (a chart pulled behind another, thin parts
-// flattened): Simplex Assembly repairs it.
+// p_a in each connected component.
 //
-// Cost: three factorizations of a #V-sized SPD matrix (CHOLMOD supernodal, AMD ordering, one
-// factorization each, through optim/linear_solver.h).
+// A least-squares fit does not keep PolyCube edges (polycube_planes.h) in order: two planes whose
+// rest positions are close can swap, and an edge between them then folds its tetrahedra in a
+// way no motion of its vertices undoes. So every edge whose corners' planes come out of rest
+// order or closer than half its rest extent has the two planes tied at that distance, and the
+// axis is solved again (an active set that only grows, at most 20 solves per axis). The map may
+// still fold (a chart pulled behind another, thin parts flattened): Simplex Assembly repairs it.
+//
+// Cost: per axis, one factorization of a #V-sized SPD matrix (CHOLMOD supernodal, AMD ordering,
+// through optim/linear_solver.h), and one more per pass that ties planes.
 
 #include <Eigen/Core>
 #include <vector>
@@ -29,6 +35,11 @@ struct CubeCover {
     Eigen::MatrixXd positions;
     /// Per chart (PolycubeCharts numbering): its coordinate along its axis.
     std::vector<double> chart_coordinate;
+    /// PolyCube edges between two corners (polycube_planes.h), and of those: edges whose corners
+    /// share a plane (no PolyCube has them), edges whose corners' planes the least-squares fit
+    /// put out of rest order or closer than half their rest extent (tied at that distance and
+    /// solved again), and edges still shorter than a quarter of their rest extent at the end.
+    Index edge_orders = 0, collapsed_edges = 0, lengthened_edges = 0, unordered_edges = 0;
     /// The minimized energy per axis, sum_T vol_T |grad_T x - e_a|^2 (0 for the identity).
     Eigen::Vector3d energy = Eigen::Vector3d::Zero();
 };

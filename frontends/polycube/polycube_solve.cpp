@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
+#include <limits>
 #include <sstream>
 #include <tuple>
 
@@ -11,6 +11,7 @@
 #include "frontends/polycube/polycube_terms.h"
 #include "frontends/simplex_assembly/untangle.h"
 #include "geometry/cube_cover.h"
+#include "geometry/polycube_planes.h"
 #include "geometry/rest_frames.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
@@ -88,8 +89,11 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
     /// them in vertex variables (untangle.h), each plane's coordinate fixed as in the vertex stage
     /// (and the vertices `fixed` flags, when given), and keeps the result when it is
     /// inversion-free with every angle sum below its limit; otherwise leaves `positions`. Rest
-    /// `mesh` and `positions` in the same units (any). Returns the number of tetrahedra that were
-    /// inverted or degenerate, and sets `*untangled` when it replaced the positions.
+    /// `mesh` and `positions` in the same units (any). Each try costs up to untangle_iterations
+    /// steps, and far from planarity (cup: thousands folded after the first assembly
+    /// iterations) it fails every time: after a failure with n bad tetrahedra, the next try
+    /// waits until fewer than n / 2 are. Returns the number of tetrahedra that were inverted or
+    /// degenerate, and sets `*untangled` when it replaced the positions.
     Index untangle_on_planes(Eigen::MatrixXd& positions, const SimplicialMesh& mesh,
                              const RestFrames<3>& frames, const std::vector<unsigned char>* fixed,
                              bool* untangled = nullptr) const {
@@ -98,7 +102,9 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
             map_quality<3>(linear_parts<3>(mesh, frames, positions), frames.volume);
         const Index bad = quality.inverted + quality.degenerate;
         const double left = options_.max_time - clock_.seconds();
-        if (bad == 0 || options_.untangle_iterations <= 0 || !(left > 0.0)) return bad;
+        if (bad == 0 || bad >= retry_below_ || options_.untangle_iterations <= 0 ||
+            !(left > 0.0))
+            return bad;
         UntangleOptions u;
         // To the untangling energy's convergence, not the first valid iterate: its near-flat
         // tetrahedra would put the conformal barrier beyond what the vertex stage can start from.
@@ -120,6 +126,7 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
                      std::to_string(r.iterations) +
                      " steps: " + (kept ? "kept" : "not kept (" + r.note + ")"));
         if (kept) positions = r.positions;
+        if (!kept) retry_below_ = bad / 2;
         if (untangled != nullptr) *untangled = kept;
         return bad;
     }
@@ -151,39 +158,17 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
     bool removes_rigid_motion() const override { return true; }
 
   private:
-    /// Planes: the charts of one axis that share a vertex lie in one plane (union-find).
+    /// Planes (geometry/polycube_planes.h), and each boundary vertex's planes.
     void build_planes() {
-        const int nc = p_.charts.size();
-        std::vector<int> parent(nc);
-        std::iota(parent.begin(), parent.end(), 0);
-        auto find = [&](int c) {
-            while (parent[c] != c) c = parent[c] = parent[parent[c]];
-            return c;
-        };
-        const std::vector<SlidingVertex> sliding = sliding_vertices(p_);
-        for (const SlidingVertex& s : sliding) {
-            for (std::size_t i = 0; i < s.charts.size(); ++i) {
-                for (std::size_t j = i + 1; j < s.charts.size(); ++j) {
-                    if (label_axis(p_.charts.label[s.charts[i]]) ==
-                        label_axis(p_.charts.label[s.charts[j]]))
-                        parent[find(s.charts[i])] = find(s.charts[j]);
-                }
-            }
-        }
-        std::vector<int> plane_of_root(nc, -1);
-        for (int c = 0; c < nc; ++c) {
-            const int r = find(c);
-            if (plane_of_root[r] < 0) {
-                plane_of_root[r] = int(plane_axis_.size());
-                plane_axis_.push_back(label_axis(p_.charts.label[c]));
-            }
-        }
-        for (const SlidingVertex& s : sliding) {
-            std::vector<int> planes;
-            for (const int c : s.charts) planes.push_back(plane_of_root[find(c)]);
-            std::sort(planes.begin(), planes.end());
-            planes.erase(std::unique(planes.begin(), planes.end()), planes.end());
-            for (const int plane : planes) members_.push_back({s.vertex, plane});
+        const PolycubePlanes planes =
+            polycube_planes(p_.boundary, p_.charts, p_.mesh.num_vertices());
+        plane_axis_ = planes.axis;
+        for (Index v = 0; v < p_.mesh.num_vertices(); ++v) {
+            std::vector<int> mine;
+            for (const int plane : planes.plane_of_vertex[v])
+                if (plane >= 0) mine.push_back(plane);
+            std::sort(mine.begin(), mine.end());
+            for (const int plane : mine) members_.push_back({v, plane});
         }
     }
 
@@ -192,6 +177,9 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
 
     PolycubePluginOptions options_;
     Stopwatch clock_;  ///< since the plugin was made: options_.max_time counts from there
+    /// untangle_on_planes() tries only below this many bad tetrahedra (the driver calls it from
+    /// one thread: at the start, then once per assembly iteration).
+    mutable Index retry_below_ = std::numeric_limits<Index>::max();
     std::vector<int> plane_axis_;                 ///< per plane: its axis
     std::vector<std::pair<Index, int>> members_;  ///< (boundary vertex, one of its planes)
 };
@@ -229,7 +217,12 @@ PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSol
     log_line(logger, "cube-cover start: " + std::to_string(out.start_quality.inverted) +
                          " inverted and " + std::to_string(out.start_quality.degenerate) +
                          " degenerate of " + std::to_string(prepared.mesh.num_simplices()) +
-                         " tetrahedra");
+                         " tetrahedra; of its " + std::to_string(cover.edge_orders) +
+                         " PolyCube edges, " + std::to_string(cover.lengthened_edges) +
+                         " kept in rest order by tying their corners' planes, " +
+                         std::to_string(cover.unordered_edges) + " still out of order, " +
+                         std::to_string(cover.collapsed_edges) +
+                         " with both corners on one plane");
 
     PolycubePluginOptions plugin_options;
     plugin_options.max_time = options.max_time - out.cube_cover_seconds;

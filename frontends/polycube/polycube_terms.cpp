@@ -33,26 +33,4 @@ PlanarityVertexElements planarity_vertex_elements(const PreparedPolycube& p) {
     return out;
 }
 
-std::vector<SlidingVertex> sliding_vertices(const PreparedPolycube& p) {
-    std::vector<std::vector<int>> charts(p.mesh.num_vertices());
-    for (Index b = 0; b < p.boundary.size(); ++b) {
-        for (int i = 0; i < 3; ++i)
-            charts[p.boundary.triangles(b, i)].push_back(p.charts.chart_of[b]);
-    }
-    std::vector<SlidingVertex> out;
-    for (Index v = 0; v < p.mesh.num_vertices(); ++v) {
-        if (charts[v].empty()) continue;
-        SlidingVertex s;
-        s.vertex = v;
-        s.charts = charts[v];
-        std::sort(s.charts.begin(), s.charts.end());
-        s.charts.erase(std::unique(s.charts.begin(), s.charts.end()), s.charts.end());
-        for (const int c : s.charts) s.axes.push_back(label_axis(p.charts.label[c]));
-        std::sort(s.axes.begin(), s.axes.end());
-        s.axes.erase(std::unique(s.axes.begin(), s.axes.end()), s.axes.end());
-        out.push_back(std::move(s));
-    }
-    return out;
-}
-
 }  // namespace sa

@@ -8,9 +8,6 @@
 //
 //   planarity_elements         Ẽ_assembly, A-form: per labelled boundary triangle, its tet.
 //   planarity_vertex_elements  the same in vertex form: per boundary triangle, its 3 vertices.
-//   sliding_vertices           what each boundary vertex may do: slide on a plane (one axis),
-//                              along a line (two), or stay (a corner: three); with
-//                              energies/polycube_constraints.h's sliding rows.
 //   for_each_dihedral_term     E_e in A-form (tets) and vertex form (p, q, ring), one call per
 //   for_each_solid_angle_term  size present; E_v likewise. The A-form of E_v holds stars of at
 //                              most kMaxAngleFan tetrahedra: larger ones are listed in `skipped`
@@ -38,13 +35,6 @@ struct PlanarityVertexElements {
 };
 PlanarityVertexElements planarity_vertex_elements(const PreparedPolycube& prepared);
 
-struct SlidingVertex {
-    Index vertex = -1;
-    std::vector<int> axes;    ///< distinct axes of the charts it lies on, increasing
-    std::vector<int> charts;  ///< those charts
-};
-/// One per boundary vertex, by increasing vertex.
-std::vector<SlidingVertex> sliding_vertices(const PreparedPolycube& prepared);
 
 namespace detail {
 

@@ -7,6 +7,7 @@
 
 #include "../geometry/polycube_fixtures.h"
 #include "frontends/polycube/boundary_angle_sums.h"
+#include "geometry/polycube_planes.h"
 
 namespace sa {
 namespace {
@@ -51,19 +52,32 @@ TEST_F(PolycubeTerms, PlanarityVanishesOnThePolycubeAndNotWhenTurned) {
     }
 }
 
-TEST_F(PolycubeTerms, SlidingVerticesOfAnL) {
-    const std::vector<SlidingVertex> sliding = sliding_vertices(p);
-    Index boundary_vertices = 0;
-    for (Index v = 0; v < p.mesh.num_vertices(); ++v)
-        boundary_vertices += p.boundary.on_boundary[v];
-    EXPECT_EQ(Index(sliding.size()), boundary_vertices);
-    std::map<std::size_t, int> by_axes;
-    for (const SlidingVertex& s : sliding) ++by_axes[s.axes.size()];
-    EXPECT_EQ(by_axes[3], 12);  // the L prism's corners
+TEST_F(PolycubeTerms, PlanesAndEdgesOfAnL) {
+    const PolycubePlanes planes = polycube_planes(p.boundary, p.charts, p.mesh.num_vertices());
+    EXPECT_EQ(planes.size(), 8);  // the L prism's faces: no two of one axis share a vertex
+    std::map<int, int> by_planes;
+    for (Index v = 0; v < p.mesh.num_vertices(); ++v) {
+        int count = 0;
+        for (const int plane : planes.plane_of_vertex[v]) count += plane >= 0;
+        EXPECT_EQ(count > 0, bool(p.boundary.on_boundary[v])) << v;
+        ++by_planes[count];
+    }
+    EXPECT_EQ(by_planes[3], 12);  // the L prism's corners
     // On PolyCube edges between corners: the top and bottom loops of the L are 8 units long, 2
     // mesh edges a unit, with 6 corners: 10 vertices each; each of the 6 vertical edges has its
     // midpoint.
-    EXPECT_EQ(by_axes[2], 10 + 10 + 6);
+    EXPECT_EQ(by_planes[2], 10 + 10 + 6);
+    // 18 PolyCube edges, each between two corners on distinct planes, in rest order.
+    const std::vector<PolycubeEdgeOrder> orders =
+        polycube_edge_orders(p.boundary, p.charts, planes, p.mesh.vertices);
+    EXPECT_EQ(orders.size(), 18u);
+    for (const PolycubeEdgeOrder& e : orders) {
+        EXPECT_NE(e.from_plane, e.to_plane);
+        EXPECT_GT(e.rest_extent, 0.0);
+        EXPECT_NEAR(e.rest_extent, p.mesh.vertices(e.to, e.axis) - p.mesh.vertices(e.from, e.axis),
+                    1e-15);
+        EXPECT_EQ(planes.plane_of_vertex[e.from][e.axis], e.from_plane);
+    }
 }
 
 // At the rest map (A = I, vertices at rest) the A-form and the vertex form of each barrier give

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "geometry/mesh_generators.h"
 #include "polycube_fixtures.h"
 
 namespace sa {
@@ -116,6 +117,42 @@ TEST(CubeCover, ChartsArePlanarAndTheInteriorIsTheLeastSquaresSolution) {
             }
         }
     }
+}
+
+// A block whose top steps up (a wall facing -X, rest height 0.2) between two slopes falling away
+// from the step: the least-squares planes of the two top charts come out in the wrong order (the
+// lower one above the upper one), which folds the wall. The cube cover ties the planes of the
+// wall's edges at half their rest extent instead.
+TEST(CubeCover, KeepsPolyCubeEdgesInRestOrder) {
+    SimplicialMesh mesh = grid_tetrahedra(20, 4, 4);  // [0, 1] x [0, 0.2] x [0, 0.2]
+    auto height = [](double x) {
+        if (x < 0.45) return 1.0 + 0.9 * (0.45 - x);
+        if (x < 0.55) return 1.0 + 0.2 * (x - 0.45) / 0.1;
+        return 1.2 - 0.9 * (x - 0.55);
+    };
+    for (Index v = 0; v < mesh.num_vertices(); ++v) {
+        mesh.vertices(v, 1) *= 2.5;
+        mesh.vertices(v, 2) *= 5.0 * height(mesh.vertices(v, 0));
+    }
+    const Covered s = make(mesh);
+    ASSERT_EQ(s.charts.size(), 8);
+    const CubeCover cover = cube_cover_map(s.mesh, s.boundary, s.charts);
+    EXPECT_GE(cover.lengthened_edges, 1);
+    EXPECT_EQ(cover.unordered_edges, 0);
+    EXPECT_EQ(cover.collapsed_edges, 0);
+    // The two top charts (+Z): the one left of the step below the one right of it.
+    double left = kInfinity, right = kInfinity;
+    for (int c = 0; c < s.charts.size(); ++c) {
+        if (s.charts.label[c] != make_label(2, +1)) continue;
+        const double x = s.mesh.vertices(s.boundary.triangles(s.charts.members[c][0], 0), 0);
+        (x < 0.5 ? left : right) = cover.chart_coordinate[c];
+    }
+    ASSERT_TRUE(std::isfinite(left) && std::isfinite(right));
+    EXPECT_GE(right - left, 0.5 * 0.2 - 1e-9);
+    Index folded = 0;
+    for (Index t = 0; t < s.mesh.num_simplices(); ++t)
+        folded += signed_volume(cover.positions, s.mesh, t) <= 0.0;
+    EXPECT_EQ(folded, 0);
 }
 
 TEST(CubeCover, KeepsTheVolumeWeightedMean) {
