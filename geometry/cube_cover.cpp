@@ -1,10 +1,9 @@
 #include "geometry/cube_cover.h"
 
-#include "geometry/polycube_planes.h"
-
 #include <Eigen/Sparse>
 #include <numeric>
 
+#include "geometry/polycube_planes.h"
 #include "optim/errors.h"
 #include "optim/linear_solver.h"
 
@@ -36,8 +35,8 @@ int find(std::vector<int>& parent, int x) {
 
 /// Minimum length of a PolyCube edge in the cube cover, as a fraction of its rest extent.
 constexpr double kMinimumEdgeFraction = 0.5;
-/// Solves after which edges still out of order are left to the untangling.
-constexpr int kMaxOrderPasses = 20;
+/// Solves per axis at most: edges still out of order after them are left to the untangling.
+constexpr int kMaxSolves = 20;
 
 /// The cube cover's coordinate along `axis` (#V): the Dirichlet energy of x - p_axis minimized
 /// with every plane of that axis at one coordinate, plane p at tie_offset[p] from tie_root[p]
@@ -194,7 +193,7 @@ CubeCover cube_cover_map(const SimplicialMesh& mesh, const TetBoundary& boundary
             // than half their rest extent: tie their planes at that distance and solve again.
             bool tied = false;
             for (const PolycubeEdgeOrder& e : orders) {
-                if (pass == kMaxOrderPasses) break;
+                if (pass + 1 == kMaxSolves) break;
                 if (e.axis != axis || e.from_plane == e.to_plane) continue;
                 const double wanted = kMinimumEdgeFraction * e.rest_extent;
                 if (x[e.to] - x[e.from] >= wanted * (1.0 - 1e-9)) continue;

@@ -8,8 +8,8 @@
 // Slot layout used by evaluate()/project(): element e of a term of arity N and Hessian block B
 // (hessian_block(), N for a dense element) owns gradient slots [e*N, e*N + N) and Hessian slots
 // [e*N*B, e*N*B + N*B): its N / B diagonal B x B blocks, each column-major, block after block
-// (for B = N, the N x N Hessian column-major). hessian_slot(N, B, column, row) gives the place
-// of an entry of a block within the element's slots.
+// (for B = N, the N x N Hessian column-major). hessian_slot(B, column, row) gives the place of
+// an entry of a block within the element's slots.
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
