@@ -221,14 +221,32 @@ struct AngleSumEnergyBase {
         if (mode == ProjectionMode::kNone) return false;
         // Derived declares hessian_block when its angles' blocks are disjoint (the A-forms).
         constexpr bool block_diagonal = requires { Derived::hessian_block; };
+        // The projection is computed from x, block by block; `h` holds the term's weight times
+        // the exact Hessian (its diagonal blocks when block_diagonal), so that weight is
+        // measured against the exact Hessian and carried over to the result.
         Vec<N> g;
+        Mat<N> exact;
+        if (!std::isfinite(evaluate(e, x, nullptr, nullptr, &g, &exact))) return false;
+        double along = 0.0, norm = 0.0;
+        for (int j = 0; j < N; ++j) {
+            for (int i = 0; i < N; ++i) {
+                if (block_diagonal && i / B != j / B) continue;
+                along += h(i, j) * exact(i, j);
+                norm += exact(i, j) * exact(i, j);
+            }
+        }
+        const double weight = norm > 0.0 ? along / norm : 1.0;
+        if (!(weight > 0.0) || !std::isfinite(weight)) return false;
         bool changed = false;
+        Mat<N> projected;
         const double energy = detail::angle_sum_energy<N, B>(
             Derived::kLimit, x, self().parts(e), [&](int k) { return self().index(e, k); },
             [&](int k, const auto& y, bool* defined) { return self().angle(e, k, y, defined); },
-            nullptr, nullptr, &g, &h, &mode, epsilon, &changed, block_diagonal);
+            nullptr, nullptr, &g, &projected, &mode, epsilon / weight, &changed, block_diagonal);
         // The majorizer changes the Hessian whether or not a block was projected.
-        return std::isfinite(energy) && (changed || block_diagonal);
+        if (!std::isfinite(energy) || !(changed || block_diagonal)) return false;
+        h = weight * projected;
+        return true;
     }
     /// theta of element e at x (+inf when an angle is undefined), and its gradient when
     /// `gradient` is given: defined beyond the limit too, for a descent that brings theta below

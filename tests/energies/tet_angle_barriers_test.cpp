@@ -219,6 +219,42 @@ TEST(TetAngleBarriers, AFormProjectionIsABlockDiagonalMajorizer) {
     }
 }
 
+// The projection is computed from x, but the Hessian it replaces carries the term's weight:
+// projecting w H (with w epsilon) gives w times the projection of H, in A-form (block diagonal)
+// and in vertex form (dense).
+TEST(TetAngleBarriers, ProjectionKeepsTheTermsWeight) {
+    SolidAngleSumEnergy<2> solid;
+    solid.stars.emplace_back();
+    solid.stars[0][0] = {Vec<3>(1, 0, 0), Vec<3>(0, 1, 0), Vec<3>(0, 0, 1)};
+    solid.stars[0][1] = {Vec<3>(0, 1, 0), Vec<3>(-1, 0, 0), Vec<3>(0, 0, 1)};
+    Vec<18> identity;
+    for (int k = 0; k < 2; ++k)
+        identity.segment<9>(9 * k) = Eigen::Map<const Vec<9>>(Mat<3>::Identity().eval().data());
+    const Vec<18> x = perturbed(identity, 5, 0.2);
+    Vec<18> g;
+    Mat<18> h;
+    ASSERT_TRUE(std::isfinite(solid.value_gradient_hessian(0, x, g, h)));
+    for (int k = 0; k < 2; ++k) {  // what the assembler's slots keep: the diagonal blocks
+        const int other = 9 * (1 - k);
+        h.block<9, 9>(9 * k, other).setZero();
+    }
+    Mat<18> once = h, thrice = 3.0 * h;
+    ASSERT_TRUE(solid.project_hessian(0, x, once, ProjectionMode::kClamp, 1e-9));
+    ASSERT_TRUE(solid.project_hessian(0, x, thrice, ProjectionMode::kClamp, 3e-9));
+    EXPECT_LT((thrice - 3.0 * once).norm(), 1e-10 * thrice.norm());
+
+    const auto fan = chain_fan<5>();
+    const Vec<21> y =
+        perturbed(fan_positions<5>({0, 80, 160, 240, 330}, {0, 0, 0, 0, 0}), 2, 0.1);
+    Vec<21> gy;
+    Mat<21> hy;
+    ASSERT_TRUE(std::isfinite(fan.value_gradient_hessian(0, y, gy, hy)));
+    Mat<21> one = hy, half = 0.5 * hy;
+    const bool projected = fan.project_hessian(0, y, one, ProjectionMode::kClamp, 1e-9);
+    EXPECT_EQ(fan.project_hessian(0, y, half, ProjectionMode::kClamp, 0.5e-9), projected);
+    EXPECT_LT((half - 0.5 * one).norm(), 1e-10 * one.norm());
+}
+
 // A fan around a boundary edge that overlaps itself (theta = 400 degrees): a descent on theta
 // along its gradient brings it below 2 pi; from there, descending the barrier plus a pull back to
 // the overlapping positions keeps it below 2 pi, E finite and decreasing, however hard the pull.
