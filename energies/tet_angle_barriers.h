@@ -220,7 +220,9 @@ struct AngleSumEnergyBase {
                          double epsilon) const {
         if (mode == ProjectionMode::kNone) return false;
         // Derived declares hessian_block when its angles' blocks are disjoint (the A-forms).
-        constexpr bool block_diagonal = requires { Derived::hessian_block; };
+        constexpr bool block_diagonal = requires {
+            Derived::hessian_block;
+        };
         // The projection is computed from x, block by block; `h` holds the term's weight times
         // the exact Hessian (its diagonal blocks when block_diagonal), so that weight is
         // measured against the exact Hessian and carried over to the result.

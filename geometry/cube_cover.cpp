@@ -45,8 +45,7 @@ constexpr int kMaxSolves = 20;
 Eigen::VectorXd solve_axis(const SimplicialMesh& mesh,
                            const std::vector<Eigen::Matrix<double, 3, 4>>& gradients,
                            const std::vector<double>& volume, const std::vector<int>& component,
-                           const PolycubePlanes& planes, int axis,
-                           const std::vector<int>& tie_root,
+                           const PolycubePlanes& planes, int axis, const std::vector<int>& tie_root,
                            const std::vector<double>& tie_offset) {
     const Index nv = mesh.num_vertices(), nt = mesh.num_simplices();
     // Unknowns: one per free vertex, one per tied set of planes; x_v = unknown + offset[v].

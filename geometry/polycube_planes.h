@@ -36,11 +36,11 @@ PolycubePlanes polycube_planes(const TetBoundary& boundary, const PolycubeCharts
 
 /// One PolyCube edge with its corners in rest order: `from` comes first along `axis`.
 struct PolycubeEdgeOrder {
-    int axis = -1;                     ///< d, the axis the edge runs along
-    Index from = -1, to = -1;          ///< its corner vertices
+    int axis = -1;                       ///< d, the axis the edge runs along
+    Index from = -1, to = -1;            ///< its corner vertices
     int from_plane = -1, to_plane = -1;  ///< their planes of axis d (equal: the edge cannot exist)
-    double rest_extent = 0.0;          ///< rest(to)_d - rest(from)_d, >= 0, in rest units
-    Index mesh_edges = 0;              ///< boundary mesh edges in the chain
+    double rest_extent = 0.0;            ///< rest(to)_d - rest(from)_d, >= 0, in rest units
+    Index mesh_edges = 0;                ///< boundary mesh edges in the chain
 };
 
 /// Every PolyCube edge of `planes` that runs between two corners, with its rest order from

@@ -18,8 +18,8 @@
 #include <Eigen/Core>
 #include <array>
 #include <atomic>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>

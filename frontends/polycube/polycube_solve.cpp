@@ -102,8 +102,7 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
             map_quality<3>(linear_parts<3>(mesh, frames, positions), frames.volume);
         const Index bad = quality.inverted + quality.degenerate;
         const double left = options_.max_time - clock_.seconds();
-        if (bad == 0 || bad >= retry_below_ || options_.untangle_iterations <= 0 ||
-            !(left > 0.0))
+        if (bad == 0 || bad >= retry_below_ || options_.untangle_iterations <= 0 || !(left > 0.0))
             return bad;
         UntangleOptions u;
         // To the untangling energy's convergence, not the first valid iterate: its near-flat
@@ -221,8 +220,7 @@ PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSol
                          " PolyCube edges, " + std::to_string(cover.lengthened_edges) +
                          " kept in rest order by tying their corners' planes, " +
                          std::to_string(cover.unordered_edges) + " still out of order, " +
-                         std::to_string(cover.collapsed_edges) +
-                         " with both corners on one plane");
+                         std::to_string(cover.collapsed_edges) + " with both corners on one plane");
 
     PolycubePluginOptions plugin_options;
     plugin_options.max_time = options.max_time - out.cube_cover_seconds;

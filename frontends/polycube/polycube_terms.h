@@ -35,7 +35,6 @@ struct PlanarityVertexElements {
 };
 PlanarityVertexElements planarity_vertex_elements(const PreparedPolycube& prepared);
 
-
 namespace detail {
 
 /// Calls f(std::integral_constant<int, k>{}) for k in [first, last].

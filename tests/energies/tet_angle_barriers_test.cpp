@@ -38,6 +38,26 @@ Vec<3> unit(double degrees) {
     return Vec<3>(std::cos(degrees * kDegree), std::sin(degrees * kDegree), 0.0);
 }
 
+/// The star of a boundary vertex made of two tetrahedra, quarter-spaces side by side (solid
+/// angle sum pi at rest), in A-form.
+SolidAngleSumEnergy<2> two_tet_star() {
+    SolidAngleSumEnergy<2> solid;
+    solid.stars.emplace_back();
+    solid.stars[0][0] = {Vec<3>(1, 0, 0), Vec<3>(0, 1, 0), Vec<3>(0, 0, 1)};
+    solid.stars[0][1] = {Vec<3>(0, 1, 0), Vec<3>(-1, 0, 0), Vec<3>(0, 0, 1)};
+    return solid;
+}
+
+/// vec(I) for each of K tetrahedra: the rest map in A-form.
+template <int K>
+Vec<9 * K> identity_parts() {
+    Vec<9 * K> identity;
+    for (int k = 0; k < K; ++k)
+        identity.template segment<9>(9 * k) =
+            Eigen::Map<const Vec<9>>(Mat<3>::Identity().eval().data());
+    return identity;
+}
+
 TEST(TetAngleBarriers, AnglesOfKnownTetrahedra) {
     bool defined = true;
     const Vec<3> x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
@@ -157,13 +177,8 @@ TEST(TetAngleBarriers, AFormAgreesWithTheVertexFormAndHasItsDerivatives) {
     EXPECT_NEAR(a_form.value(0, a), vertex_form.value(0, x), 1e-12);
     expect_derivatives(a_form, perturbed(a, 6, 0.02));
 
-    SolidAngleSumEnergy<2> solid;
-    solid.stars.emplace_back();
-    solid.stars[0][0] = {Vec<3>(1, 0, 0), Vec<3>(0, 1, 0), Vec<3>(0, 0, 1)};
-    solid.stars[0][1] = {Vec<3>(0, 1, 0), Vec<3>(-1, 0, 0), Vec<3>(0, 0, 1)};
-    Vec<18> identity;
-    for (int k = 0; k < 2; ++k)
-        identity.segment<9>(9 * k) = Eigen::Map<const Vec<9>>(Mat<3>::Identity().eval().data());
+    const SolidAngleSumEnergy<2> solid = two_tet_star();
+    const Vec<18> identity = identity_parts<2>();
     EXPECT_NEAR(solid.angle_sum(0, identity), M_PI, 1e-14);
     expect_derivatives(solid, perturbed(identity, 7, 0.1));
 }
@@ -193,14 +208,9 @@ TEST(TetAngleBarriers, ProjectedHessianIsPositiveSemidefinite) {
 // E'' = 2 E^3, projected - (2 / E) g g^T = (majorizer - rank-one term) + (projected angle
 // blocks) is positive semidefinite.
 TEST(TetAngleBarriers, AFormProjectionIsABlockDiagonalMajorizer) {
-    SolidAngleSumEnergy<2> solid;
-    solid.stars.emplace_back();
-    solid.stars[0][0] = {Vec<3>(1, 0, 0), Vec<3>(0, 1, 0), Vec<3>(0, 0, 1)};
-    solid.stars[0][1] = {Vec<3>(0, 1, 0), Vec<3>(-1, 0, 0), Vec<3>(0, 0, 1)};
+    const SolidAngleSumEnergy<2> solid = two_tet_star();
     static_assert(SolidAngleSumEnergy<2>::hessian_block == 9);
-    Vec<18> identity;
-    for (int k = 0; k < 2; ++k)
-        identity.segment<9>(9 * k) = Eigen::Map<const Vec<9>>(Mat<3>::Identity().eval().data());
+    const Vec<18> identity = identity_parts<2>();
     for (const unsigned seed : {1u, 2u, 3u}) {
         const Vec<18> x = perturbed(identity, seed, 0.2);
         Vec<18> g;
@@ -223,13 +233,8 @@ TEST(TetAngleBarriers, AFormProjectionIsABlockDiagonalMajorizer) {
 // projecting w H (with w epsilon) gives w times the projection of H, in A-form (block diagonal)
 // and in vertex form (dense).
 TEST(TetAngleBarriers, ProjectionKeepsTheTermsWeight) {
-    SolidAngleSumEnergy<2> solid;
-    solid.stars.emplace_back();
-    solid.stars[0][0] = {Vec<3>(1, 0, 0), Vec<3>(0, 1, 0), Vec<3>(0, 0, 1)};
-    solid.stars[0][1] = {Vec<3>(0, 1, 0), Vec<3>(-1, 0, 0), Vec<3>(0, 0, 1)};
-    Vec<18> identity;
-    for (int k = 0; k < 2; ++k)
-        identity.segment<9>(9 * k) = Eigen::Map<const Vec<9>>(Mat<3>::Identity().eval().data());
+    const SolidAngleSumEnergy<2> solid = two_tet_star();
+    const Vec<18> identity = identity_parts<2>();
     const Vec<18> x = perturbed(identity, 5, 0.2);
     Vec<18> g;
     Mat<18> h;
@@ -244,8 +249,7 @@ TEST(TetAngleBarriers, ProjectionKeepsTheTermsWeight) {
     EXPECT_LT((thrice - 3.0 * once).norm(), 1e-10 * thrice.norm());
 
     const auto fan = chain_fan<5>();
-    const Vec<21> y =
-        perturbed(fan_positions<5>({0, 80, 160, 240, 330}, {0, 0, 0, 0, 0}), 2, 0.1);
+    const Vec<21> y = perturbed(fan_positions<5>({0, 80, 160, 240, 330}, {0, 0, 0, 0, 0}), 2, 0.1);
     Vec<21> gy;
     Mat<21> hy;
     ASSERT_TRUE(std::isfinite(fan.value_gradient_hessian(0, y, gy, hy)));
