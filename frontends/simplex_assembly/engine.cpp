@@ -121,7 +121,8 @@ SimplexAssemblyEngine<D> SimplexAssemblyEngine<D>::corner_copies(
 template <int D>
 SimplexAssemblyEngine<D> SimplexAssemblyEngine<D>::vertex_positions(
     const Eigen::MatrixXd& positions, std::vector<std::array<Index, D + 1>> simplices,
-    std::vector<Corners> rest_corners, std::vector<Mat<D>> rest_edge_inverse) {
+    std::vector<Corners> rest_corners, std::vector<Mat<D>> rest_edge_inverse,
+    std::vector<Index> shared) {
     const Index n = static_cast<Index>(simplices.size());
     if (Index(rest_corners.size()) != n || Index(rest_edge_inverse.size()) != n) {
         throw InvalidArgumentError(
@@ -146,7 +147,30 @@ SimplexAssemblyEngine<D> SimplexAssemblyEngine<D>::vertex_positions(
     // Vertex-major coordinates, x[D v + c].
     Eigen::VectorXd x(static_cast<Index>(D) * nv);
     for (Index v = 0; v < nv; ++v) x.template segment<D>(D * v) = positions.row(v).transpose();
+    if (!shared.empty()) {
+        if (Index(shared.size()) != x.size()) {
+            throw InvalidArgumentError("SimplexAssemblyEngine::vertex_positions: shared has " +
+                                       std::to_string(shared.size()) + " entries for " +
+                                       std::to_string(x.size()) + " coordinates");
+        }
+        Eigen::VectorXd sum = Eigen::VectorXd::Zero(x.size());
+        Eigen::VectorXd count = Eigen::VectorXd::Zero(x.size());
+        for (Index i = 0; i < x.size(); ++i) {
+            const Index j = shared[i];
+            if (j < 0 || j >= x.size() || shared[j] != j) {
+                throw InvalidArgumentError("SimplexAssemblyEngine::vertex_positions: coordinate " +
+                                           std::to_string(i) + " shares coordinate " +
+                                           std::to_string(j) +
+                                           ", which is out of range or shares another");
+            }
+            sum[j] += x[i];
+            count[j] += 1.0;
+        }
+        for (Index i = 0; i < x.size(); ++i)
+            if (shared[i] == i) x[i] = sum[i] / count[i];
+    }
     SimplexAssemblyEngine engine(LayoutTag{}, Layout::kVertexPositions, std::move(x), n);
+    engine.shared_ = std::move(shared);
     engine.simplices_ = std::move(simplices);
     engine.rest_corners_ = std::move(rest_corners);
     engine.rest_inverse_ = std::move(rest_edge_inverse);
@@ -155,8 +179,16 @@ SimplexAssemblyEngine<D> SimplexAssemblyEngine<D>::vertex_positions(
 
 template <int D>
 Index SimplexAssemblyEngine<D>::corner_variable(Index s, int k, int c) const {
-    if (layout_ == Layout::kVertexPositions) return Index(D) * simplices_[s][k] + c;
+    if (layout_ == Layout::kVertexPositions)
+        return coordinate_variable(Index(D) * simplices_[s][k] + c);
     return Index(kAffine) * s + D * k + c;
+}
+
+template <int D>
+Vec<D> SimplexAssemblyEngine<D>::corner(const Eigen::VectorXd& x, Index s, int k) const {
+    Vec<D> p;
+    for (int c = 0; c < D; ++c) p[c] = x[corner_variable(s, k, c)];
+    return p;
 }
 
 template <int D>
@@ -224,7 +256,9 @@ std::array<Index, D> SimplexAssemblyEngine<D>::vertex_variables(Index v) const {
                                    " outside [0, " + std::to_string(problem_.num_variables() / D) +
                                    ")");
     }
-    return consecutive<D>(Index(D) * v);
+    std::array<Index, D> out;
+    for (int c = 0; c < D; ++c) out[c] = coordinate_variable(Index(D) * v + c);
+    return out;
 }
 
 template <int D>
@@ -288,8 +322,7 @@ Mat<D> SimplexAssemblyEngine<D>::linear_part(const Eigen::VectorXd& x, Index s) 
     if (layout_ != Layout::kLinearParts) {
         Mat<D> edges;
         for (int k = 0; k < D; ++k) {
-            edges.col(k) = x.template segment<D>(corner_variable(s, k + 1, 0)) -
-                           x.template segment<D>(corner_variable(s, 0, 0));
+            edges.col(k) = corner(x, s, k + 1) - corner(x, s, 0);
         }
         return edges * rest_inverse_[s];
     }
@@ -311,7 +344,7 @@ std::vector<std::pair<Index, Vec<D>>> SimplexAssemblyEngine<D>::known_translatio
         for (Index s = 0; s < num_simplices_; ++s) {
             // T maps the frame's origin: mean of the copies minus A times the mean rest corner.
             Vec<D> mean = Vec<D>::Zero();
-            for (int k = 0; k <= D; ++k) mean += x.template segment<D>(corner_variable(s, k, 0));
+            for (int k = 0; k <= D; ++k) mean += corner(x, s, k);
             mean /= double(D + 1);
             const Vec<D> rest_mean = rest_corners_[s].rowwise().mean();
             known.emplace_back(s, mean - linear_part(x, s) * rest_mean);
@@ -330,7 +363,8 @@ Eigen::MatrixXd SimplexAssemblyEngine<D>::positions(const Eigen::VectorXd& x) co
     }
     const Index nv = x.size() / D;
     Eigen::MatrixXd p(nv, D);
-    for (Index v = 0; v < nv; ++v) p.row(v) = x.template segment<D>(D * v).transpose();
+    for (Index v = 0; v < nv; ++v)
+        for (int c = 0; c < D; ++c) p(v, c) = x[coordinate_variable(D * v + c)];
     return p;
 }
 
@@ -396,6 +430,7 @@ AssemblyRun SimplexAssemblyEngine<D>::run(const AssemblyEngineOptions& options,
     }
     newton.projection = options.projection;
     newton.projection_epsilon = options.projection_epsilon;
+    newton.line_search.restart_after_capped_step = options.restart_after_capped_step;
     newton.linear_solver = options.linear_solver;
     newton.num_threads = options.num_threads;
     double last_assembly = schedule ? kInfinity : 0.0;

@@ -132,10 +132,19 @@ class SimplexAssemblyEngine {
                                                std::vector<Mat<D>> rest_edge_inverse);
     /// The vertex layout: `positions` #V x D (row v the image of vertex v), simplex s has the
     /// vertices simplices[s] (corner k of rest_corners[s] is vertex simplices[s][k]).
+    ///
+    /// `shared` (empty, or D #V entries) makes single coordinates one variable: coordinate c of
+    /// vertex v (index D v + c) is the variable of coordinate shared[D v + c], which must share
+    /// with itself. A PolyCube plane is one such variable: every vertex on it keeps one common
+    /// coordinate along its normal, which moves. A shared variable starts at the mean of its
+    /// coordinates in `positions`; a coordinate that shares another's has no variable of its own
+    /// (its slot in the variable vector is left unused), and vertex_variables() names the shared
+    /// one.
     static SimplexAssemblyEngine vertex_positions(const Eigen::MatrixXd& positions,
                                                   std::vector<std::array<Index, D + 1>> simplices,
                                                   std::vector<Corners> rest_corners,
-                                                  std::vector<Mat<D>> rest_edge_inverse);
+                                                  std::vector<Mat<D>> rest_edge_inverse,
+                                                  std::vector<Index> shared = {});
 
     Layout layout() const { return layout_; }
     Index num_simplices() const { return num_simplices_; }
@@ -153,6 +162,9 @@ class SimplexAssemblyEngine {
     std::array<Index, kAffine> affine_variables(Index s) const;
     /// The position of vertex v (vertex layout).
     std::array<Index, D> vertex_variables(Index v) const;
+    /// Vertex layout: the variable of coordinate c of vertex v, given as i = D v + c (itself
+    /// unless shared, see vertex_positions()).
+    Index coordinate_variable(Index i) const { return shared_.empty() ? i : shared_[i]; }
     /// The image A_s u + T_s of the rest point u (in s's frame) as a linear function of
     /// affine_variables(s): image = coefficients * x[affine_variables(s)].
     ImageMap image_coefficients(Index s, const Vec<D>& u) const;
@@ -214,6 +226,8 @@ class SimplexAssemblyEngine {
     void declare_blocks();
     /// Corner and vertex layouts: variable of coordinate c of corner k of simplex s.
     Index corner_variable(Index s, int k, int c) const;
+    /// Corner and vertex layouts: the position of corner k of simplex s.
+    Vec<D> corner(const Eigen::VectorXd& x, Index s, int k) const;
 
     Layout layout_;
     Index num_simplices_;
@@ -223,6 +237,7 @@ class SimplexAssemblyEngine {
     std::vector<Corners> rest_corners_;                ///< corner and vertex layouts
     std::vector<Mat<D>> rest_inverse_;                 ///< corner and vertex layouts
     std::vector<std::array<Index, D + 1>> simplices_;  ///< vertex layout
+    std::vector<Index> shared_;                        ///< vertex layout: see vertex_positions()
     std::vector<TermId> assembly_terms_, barrier_terms_;
     BlockId translation_block_ = -1;
     bool blocks_declared_ = false;

@@ -12,6 +12,7 @@
 #include "geometry/mesh_generators.h"
 #include "geometry/mesh_topology.h"
 #include "geometry/rest_frames.h"
+#include "optim/problem_evaluation.h"
 #include "tests/frontends/user_conformal.h"
 
 namespace sa {
@@ -220,6 +221,64 @@ TEST(Engine, CornerLayoutNamesImagesAndLinearParts) {
         EXPECT_LT((engine.linear_part(x, s) - p.A[s]).norm(), 1e-12);
         EXPECT_LT((engine.known_translations(x)[s].second - p.T[s].second).norm(), 1e-12);
     }
+}
+
+// Shared coordinates (a PolyCube plane): the top face's z is one variable. Its gradient is the sum
+// of the top vertices' z-gradients without sharing, the positions read it back for every one of
+// them, and a Newton run moves the face as a whole.
+TEST(Engine, SharedCoordinatesAreOneVariable) {
+    const SimplicialMesh mesh = grid_tetrahedra(3, 3, 3);
+    const RestFrames<3> frames = rest_frames<3>(mesh);
+    const Index nv = mesh.num_vertices();
+    Eigen::MatrixXd start = mesh.vertices;
+    std::vector<Index> top, bottom;
+    for (Index v = 0; v < nv; ++v) {
+        start(v, 2) *= 1.3;  // the rest shape stretched along z: the energy pulls the top down
+        if (mesh.vertices(v, 2) == 1.0) top.push_back(v);
+        if (mesh.vertices(v, 2) == 0.0) bottom.push_back(v);
+    }
+    std::vector<std::array<Index, 4>> simplices(mesh.num_simplices());
+    for (Index s = 0; s < mesh.num_simplices(); ++s)
+        for (int k = 0; k < 4; ++k) simplices[s][k] = mesh.simplices(s, k);
+    std::vector<Index> shared(3 * nv);
+    for (Index i = 0; i < 3 * nv; ++i) shared[i] = i;
+    for (Index v : top) shared[3 * v + 2] = 3 * top.front() + 2;
+    auto make = [&](std::vector<Index> sharing) {
+        auto engine = SimplexAssemblyEngine<3>::vertex_positions(
+            start, simplices, frames.corners, frames.edge_inverse, std::move(sharing));
+        engine.add_simplex_energy("E_C", conformal_barrier<3>(frames));
+        for (Index v : bottom) engine.fix_vertex(v);
+        return engine;
+    };
+    SimplexAssemblyEngine<3> plain = make({}), tied = make(shared);
+    const Index z = tied.vertex_variables(top.back())[2];
+    EXPECT_EQ(z, 3 * top.front() + 2);
+    EXPECT_EQ(tied.coordinate_variable(3 * top.back() + 2), z);
+    EXPECT_LT((tied.positions(tied.problem().variables()) - start).norm(), 1e-14);
+
+    const ProblemEvaluation e = evaluate(plain.problem(), plain.problem().variables());
+    ProblemEvaluator tied_evaluator(tied.problem());
+    const ProblemEvaluation f = tied_evaluator.evaluate(tied.problem().variables());
+    EXPECT_NEAR(e.value, f.value, 1e-12 * std::abs(e.value));
+    ProblemEvaluator plain_evaluator(plain.problem());
+    const Eigen::VectorXd g = plain_evaluator.expand(e.gradient);
+    double sum = 0.0;
+    for (Index v : top) sum += g[3 * v + 2];
+    const Eigen::VectorXd h = tied_evaluator.expand(f.gradient);
+    EXPECT_NEAR(h[z], sum, 1e-10 * std::abs(sum));
+    EXPECT_EQ(Index(f.gradient.size()), Index(e.gradient.size()) - Index(top.size()) + 1);
+
+    AssemblyEngineOptions options;
+    options.max_iterations = 50;
+    tied.run(options);
+    const Eigen::MatrixXd end = tied.positions(tied.problem().variables());
+    for (Index v : top) EXPECT_EQ(end(v, 2), end(top.front(), 2));
+    EXPECT_LT(end(top.front(), 2), 1.3 - 0.1);
+    for (const Mat<3>& A : tied.linear_parts(tied.problem().variables()))
+        EXPECT_GT(A.determinant(), 0.0);
+
+    shared[3 * top.front() + 2] = 0;  // a chain: the coordinate it names shares another's
+    EXPECT_THROW(make(shared), InvalidArgumentError);
 }
 
 TEST(Engine, SaysWhyItStopped) {
