@@ -52,20 +52,28 @@ UntangleResult untangle(const SimplicialMesh& mesh, const RestFrames<D>& frames,
     for (double& w : weights) w /= total_volume;
     const Index m = static_cast<Index>(moving.size());
 
+    // The engine in its vertex layout, with f_eps as the only per-simplex energy and no assembly
+    // term: projected Newton, ended by the eps rule's hook below or the limits.
+    std::vector<std::array<Index, D + 1>> simplices(mesh.num_simplices());
+    for (Index s = 0; s < mesh.num_simplices(); ++s)
+        for (int k = 0; k <= D; ++k) simplices[s][k] = mesh.simplices(s, k);
+    if (!options.shared_coordinates.empty() &&
+        options.shared_coordinates.size() != static_cast<std::size_t>(D * nv)) {
+        throw InvalidArgumentError("untangle: shared_coordinates has " +
+                                   std::to_string(options.shared_coordinates.size()) +
+                                   " entries for " + std::to_string(D * nv) + " coordinates");
+    }
+    SimplexAssemblyEngine<D> engine = SimplexAssemblyEngine<D>::vertex_positions(
+        start.leftCols(D), std::move(simplices), frames.corners, frames.edge_inverse,
+        options.shared_coordinates);
+
     // det A of every moving simplex at x: the quantity eps is measured against.
     auto determinants = [&](const Eigen::VectorXd& at) {
         return tbb::parallel_reduce(
             tbb::blocked_range<Index>(0, m, 1024), DeterminantStats{},
             [&](const tbb::blocked_range<Index>& r, DeterminantStats acc) {
                 for (Index k = r.begin(); k != r.end(); ++k) {
-                    Mat<D> edges;
-                    const Index s = moving[k];
-                    const Index v0 = mesh.simplices(s, 0);
-                    for (int c = 0; c < D; ++c) {
-                        edges.col(c) = at.template segment<D>(D * mesh.simplices(s, c + 1)) -
-                                       at.template segment<D>(D * v0);
-                    }
-                    const double det = (edges * frames.edge_inverse[s]).determinant();
+                    const double det = engine.linear_part(at, moving[k]).determinant();
                     acc.min = std::min(acc.min, det);
                     acc.nonpositive += det > 0.0 ? 0 : 1;
                 }
@@ -77,14 +85,6 @@ UntangleResult untangle(const SimplicialMesh& mesh, const RestFrames<D>& frames,
                 return a;
             });
     };
-
-    // The engine in its vertex layout, with f_eps as the only per-simplex energy and no assembly
-    // term: projected Newton, ended by the eps rule's hook below or the limits.
-    std::vector<std::array<Index, D + 1>> simplices(mesh.num_simplices());
-    for (Index s = 0; s < mesh.num_simplices(); ++s)
-        for (int k = 0; k <= D; ++k) simplices[s][k] = mesh.simplices(s, k);
-    SimplexAssemblyEngine<D> engine = SimplexAssemblyEngine<D>::vertex_positions(
-        start.leftCols(D), std::move(simplices), frames.corners, frames.edge_inverse);
     auto parameters = std::make_shared<UntanglingParameters>();
     if (m > 0) {
         engine.add_simplex_energy("untangling", UntanglingEnergy<D>(std::move(weights), parameters),
@@ -99,7 +99,8 @@ UntangleResult untangle(const SimplicialMesh& mesh, const RestFrames<D>& frames,
                                        " flags for " + std::to_string(D * nv) + " coordinates");
         }
         for (Index i = 0; i < D * nv; ++i) {
-            if (options.fixed_coordinates[i]) engine.problem().set_fixed(i);
+            if (options.fixed_coordinates[i])
+                engine.problem().set_fixed(engine.coordinate_variable(i));
         }
     }
     Eigen::VectorXd x = engine.problem().variables();

@@ -44,6 +44,12 @@ struct UntangleOptions {
     /// coordinate c of vertex v at D v + c (a vertex sliding on a plane keeps the coordinate along
     /// the plane's normal: PolyCube). A vertex with some coordinates fixed still moves.
     std::vector<unsigned char> fixed_coordinates;
+    /// Single coordinates that are one variable (SimplexAssemblyEngine::vertex_positions): empty,
+    /// or D #V entries, coordinate D v + c sharing the variable of coordinate
+    /// shared_coordinates[D v + c]. A PolyCube plane's vertices share the coordinate along its
+    /// normal, so the plane moves as one. Shared coordinates start at their mean; fixing one
+    /// (fixed_coordinates) fixes them all.
+    std::vector<Index> shared_coordinates;
     double energy_tolerance = 1e-5;
     int max_iterations = 500;
     double max_time_seconds = kInfinity;

@@ -73,6 +73,47 @@ TEST(Untangle, FixedCoordinatesKeepTheirValues) {
     EXPECT_THROW(untangle<3>(g.rest, frames, g.initial, fixed, options), InvalidArgumentError);
 }
 
+// PolyCube's moving planes: single coordinates of several vertices as one variable
+// (shared_coordinates). Here the top face's z is one variable and its other coordinates and the
+// rest of the boundary are fixed: the tangle is undone and the top stays one plane.
+TEST(Untangle, SharedCoordinatesMoveAsOne) {
+    const GeneratedProblem g = fixed_boundary_problem(
+        grid_tetrahedra(4, 4, 10), GeneratedDeformation::kTwist, 2.0, 1.0, 1, 0.02);
+    const RestFrames<3> frames = rest_frames<3>(g.rest);
+    const Index nv = g.rest.num_vertices();
+    std::vector<unsigned char> fixed(nv, 0);
+    UntangleOptions options;
+    options.fixed_coordinates.assign(3 * nv, 0);
+    options.shared_coordinates.resize(3 * nv);
+    for (Index i = 0; i < 3 * nv; ++i) options.shared_coordinates[i] = i;
+    const double top = g.rest.vertices.col(2).maxCoeff();
+    Index first = -1;
+    for (Index h : g.handles) {
+        if (g.rest.vertices(h, 2) < top) {
+            fixed[h] = 1;
+            continue;
+        }
+        if (first < 0) first = h;
+        options.shared_coordinates[3 * h + 2] = 3 * first + 2;
+        options.fixed_coordinates[3 * h] = options.fixed_coordinates[3 * h + 1] = 1;
+    }
+    Eigen::MatrixXd start = g.initial;
+    for (Index h : g.handles)
+        if (g.rest.vertices(h, 2) == top) start(h, 2) += 0.3;  // the plane moved up
+    const UntangleResult r = untangle<3>(g.rest, frames, start, fixed, options);
+    EXPECT_TRUE(r.untangled) << r.note;
+    const MapQuality q = quality(g.rest, r.positions);
+    EXPECT_EQ(q.inverted + q.degenerate, 0);
+    for (Index h : g.handles) {
+        if (g.rest.vertices(h, 2) < top) continue;
+        EXPECT_EQ(r.positions(h, 2), r.positions(first, 2));
+        EXPECT_EQ(r.positions(h, 0), start(h, 0));
+    }
+    EXPECT_NE(r.positions(first, 2), start(first, 2));
+    options.shared_coordinates.pop_back();
+    EXPECT_THROW(untangle<3>(g.rest, frames, start, fixed, options), InvalidArgumentError);
+}
+
 TEST(Untangle, AnUntangledStartIsReturnedAsItIs) {
     const SimplicialMesh rest = grid_tetrahedra(2, 2, 2);
     const RestFrames<3> frames = rest_frames<3>(rest);
