@@ -1,6 +1,8 @@
 #include "geometry/cube_cover.h"
 
 #include <Eigen/Sparse>
+#include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "geometry/polycube_planes.h"
@@ -33,6 +35,7 @@ int find(std::vector<int>& parent, int x) {
     return x;
 }
 
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// Minimum length of a PolyCube edge in the cube cover, as a fraction of its rest extent.
 constexpr double kMinimumEdgeFraction = 0.5;
 /// Solves per axis at most: edges still out of order after them are left to the untangling.
@@ -41,18 +44,27 @@ constexpr int kMaxSolves = 20;
 /// The cube cover's coordinate along `axis` (#V): the Dirichlet energy of x - p_axis minimized
 /// with every plane of that axis at one coordinate, plane p at tie_offset[p] from tie_root[p]
 /// (chains of ties end at a plane that is its own root), shifted so that each connected
-/// component keeps its volume-weighted mean.
+/// component keeps its volume-weighted mean. Vertices with a finite `pinned` value (empty: none)
+/// take it (before that shift) instead of being solved for.
 Eigen::VectorXd solve_axis(const SimplicialMesh& mesh,
                            const std::vector<Eigen::Matrix<double, 3, 4>>& gradients,
                            const std::vector<double>& volume, const std::vector<int>& component,
                            const PolycubePlanes& planes, int axis, const std::vector<int>& tie_root,
-                           const std::vector<double>& tie_offset) {
+                           const std::vector<double>& tie_offset,
+                           const Eigen::VectorXd& pinned = {}) {
     const Index nv = mesh.num_vertices(), nt = mesh.num_simplices();
-    // Unknowns: one per free vertex, one per tied set of planes; x_v = unknown + offset[v].
+    // Unknowns: one per free vertex, one per tied set of planes; x_v = unknown + offset[v], or
+    // offset[v] alone for a pinned vertex (unknown -1).
     std::vector<Index> unknown(nv, -1), unknown_of_root(planes.size(), -1);
     Eigen::VectorXd offset = Eigen::VectorXd::Zero(nv);
+    std::vector<unsigned char> component_pinned(nv, 0);
     Index n = 0;
     for (Index v = 0; v < nv; ++v) {
+        if (pinned.size() > 0 && std::isfinite(pinned[v])) {
+            offset[v] = pinned[v];
+            component_pinned[component[v]] = 1;
+            continue;
+        }
         int p = planes.plane_of_vertex[v][axis];
         if (p < 0) {
             unknown[v] = n++;
@@ -65,22 +77,22 @@ Eigen::VectorXd solve_axis(const SimplicialMesh& mesh,
         if (unknown_of_root[p] < 0) unknown_of_root[p] = n++;
         unknown[v] = unknown_of_root[p];
     }
-    // One unknown per component is pinned at 0 (the energy does not see translations); the
-    // solution is shifted afterwards.
-    std::vector<unsigned char> pinned(n, 0);
+    // One unknown per component without pinned vertices is held at 0 (the energy does not see
+    // translations); the solution is shifted afterwards.
+    std::vector<unsigned char> held(n, 0);
     {
-        std::vector<unsigned char> seen(nv, 0);
+        std::vector<unsigned char> seen(component_pinned);
         for (Index v = 0; v < nv; ++v) {
-            if (!seen[component[v]]) {
+            if (unknown[v] >= 0 && !seen[component[v]]) {
                 seen[component[v]] = 1;
-                pinned[unknown[v]] = 1;
+                held[unknown[v]] = 1;
             }
         }
     }
     std::vector<Index> row(n, -1);
     Index m = 0;
     for (Index i = 0; i < n; ++i) {
-        if (!pinned[i]) row[i] = m++;
+        if (!held[i]) row[i] = m++;
     }
     // sum_T vol |G x_T - e_a|^2 = y^T K y - 2 y^T (b - K offset) + const, K_T = vol G^T G,
     // b_T = vol G^T e_a.
@@ -93,12 +105,16 @@ Eigen::VectorXd solve_axis(const SimplicialMesh& mesh,
         Eigen::Vector4d o;
         for (int i = 0; i < 4; ++i) o[i] = offset[mesh.simplices(t, i)];
         const Eigen::Vector4d r = b - K * o;
+        auto row_of = [&](int i) {
+            const Index u = unknown[mesh.simplices(t, i)];
+            return u < 0 ? Index(-1) : row[u];
+        };
         for (int i = 0; i < 4; ++i) {
-            const Index ri = row[unknown[mesh.simplices(t, i)]];
+            const Index ri = row_of(i);
             if (ri < 0) continue;
             rhs[ri] += r[i];
             for (int j = 0; j < 4; ++j) {
-                const Index rj = row[unknown[mesh.simplices(t, j)]];
+                const Index rj = row_of(j);
                 if (rj >= 0 && rj <= ri) entries.emplace_back(ri, rj, K(i, j));
             }
         }
@@ -120,7 +136,7 @@ Eigen::VectorXd solve_axis(const SimplicialMesh& mesh,
         }
     }
     Eigen::VectorXd x(nv);
-    for (Index v = 0; v < nv; ++v) x[v] = solution[unknown[v]] + offset[v];
+    for (Index v = 0; v < nv; ++v) x[v] = (unknown[v] < 0 ? 0.0 : solution[unknown[v]]) + offset[v];
     // Shift each component so that its volume-weighted mean is the rest one.
     std::vector<double> shift(nv, 0.0), weight(nv, 0.0);
     for (Index t = 0; t < nt; ++t) {
@@ -207,6 +223,33 @@ CubeCover cube_cover_map(const SimplicialMesh& mesh, const TetBoundary& boundary
                 tied = true;
             }
             if (!tied) break;
+        }
+        // The vertices of every edge along this axis in their order between its corners, spaced
+        // as at rest (arc length): a vertex on two planes moves only along their line, so one
+        // that starts beyond its neighbour on the line could pass it only by collapsing the edge
+        // between them, which no inversion-free path does (robustPolycube/cup). The planes keep
+        // their coordinates; the rest follows the Laplacian again.
+        Eigen::VectorXd pinned = Eigen::VectorXd::Constant(nv, kNaN);
+        bool any = false;
+        for (const PolycubeEdgeOrder& e : orders) {
+            if (e.axis != axis || e.from_plane == e.to_plane || !(x[e.to] > x[e.from])) continue;
+            std::vector<double> length(e.vertices.size(), 0.0);
+            for (std::size_t k = 1; k < e.vertices.size(); ++k) {
+                length[k] = length[k - 1] + (mesh.vertices.row(e.vertices[k]) -
+                                             mesh.vertices.row(e.vertices[k - 1]))
+                                                .norm();
+            }
+            for (std::size_t k = 1; k + 1 < e.vertices.size(); ++k) {
+                pinned[e.vertices[k]] =
+                    x[e.from] + (x[e.to] - x[e.from]) * length[k] / length.back();
+                any = true;
+            }
+        }
+        if (any) {
+            for (Index v = 0; v < nv; ++v)
+                if (planes.plane_of_vertex[v][axis] >= 0) pinned[v] = x[v];
+            x = solve_axis(mesh, gradients, volume, component, planes, axis, tie_root, tie_offset,
+                           pinned);
         }
         for (const PolycubeEdgeOrder& e : orders) {
             if (e.axis == axis && e.from_plane != e.to_plane &&

@@ -8,7 +8,8 @@
 //     subject to x_v = c_k for every vertex v of a chart k of axis a,
 //
 // i.e. the Dirichlet energy of x - p_a (p the rest positions) with the P1 gradients of the rest
-// tetrahedra: the interior follows the cotangent Laplacian, L x = L p_a away from the charts.
+// tetrahedra: the interior follows the cotangent Laplacian, L x = L p_a away from the charts (and
+// the PolyCube edges, below).
 // Charts of one axis that share a vertex share their coordinate. The energy does not see a
 // translation along a; the solution is shifted so that its volume-weighted mean equals that of
 // p_a in each connected component.
@@ -17,11 +18,19 @@
 // rest positions are close can swap, and an edge between them then folds its tetrahedra in a
 // way no motion of its vertices undoes. So every edge whose corners' planes come out of rest
 // order or closer than half its rest extent has the two planes tied at that distance, and the
-// axis is solved again (an active set that only grows, at most 20 solves per axis). The map may
-// still fold (a chart pulled behind another, thin parts flattened): Simplex Assembly repairs it.
+// axis is solved again (an active set that only grows, at most 20 solves per axis).
+//
+// The same holds for the vertices inside an edge: on the line where its two planes meet each has
+// one degree of freedom, so a vertex placed beyond its neighbour along the line could only get
+// back past it by collapsing the mesh edge between them, which no inversion-free path does (on
+// S1 such an edge is U-shaped at rest; on cup one turns back at a corner). So, once the planes
+// are placed, the vertices of every edge along the axis are set in their order between its
+// corners, spaced by rest arc length, and the axis is solved once more with the planes and those
+// vertices held. The map may still fold (a chart pulled behind another, thin parts flattened):
+// Simplex Assembly, or the untangling on the planes, repairs it.
 //
 // Cost: per axis, one factorization of a #V-sized SPD matrix (CHOLMOD supernodal, AMD ordering,
-// through optim/linear_solver.h), and one more per pass that ties planes.
+// through optim/linear_solver.h), one more per pass that ties planes, and one for the edges.
 
 #include <Eigen/Core>
 #include <vector>

@@ -93,6 +93,7 @@ std::vector<PolycubeEdgeOrder> polycube_edge_orders(const TetBoundary& boundary,
                 if (walked[first_edge]) continue;
                 walked[first_edge] = 1;
                 Index previous = start, current = first, count = 1;
+                std::vector<Index> chain{start, first};
                 bool ends_at_corner = true;
                 while (!corner(current)) {
                     const auto& next = around[current];
@@ -108,6 +109,7 @@ std::vector<PolycubeEdgeOrder> polycube_edge_orders(const TetBoundary& boundary,
                     walked[step.second] = 1;
                     previous = current;
                     current = step.first;
+                    chain.push_back(current);
                     ++count;
                 }
                 if (!ends_at_corner) continue;
@@ -115,7 +117,11 @@ std::vector<PolycubeEdgeOrder> polycube_edge_orders(const TetBoundary& boundary,
                 order.axis = axis;
                 order.from = start;
                 order.to = current;
-                if (rest(order.to, axis) < rest(order.from, axis)) std::swap(order.from, order.to);
+                if (rest(order.to, axis) < rest(order.from, axis)) {
+                    std::swap(order.from, order.to);
+                    std::reverse(chain.begin(), chain.end());
+                }
+                order.vertices = std::move(chain);
                 order.from_plane = planes.plane_of_vertex[order.from][axis];
                 order.to_plane = planes.plane_of_vertex[order.to][axis];
                 order.rest_extent = rest(order.to, axis) - rest(order.from, axis);

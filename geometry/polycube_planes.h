@@ -41,6 +41,8 @@ struct PolycubeEdgeOrder {
     int from_plane = -1, to_plane = -1;  ///< their planes of axis d (equal: the edge cannot exist)
     double rest_extent = 0.0;            ///< rest(to)_d - rest(from)_d, >= 0, in rest units
     Index mesh_edges = 0;                ///< boundary mesh edges in the chain
+    /// The chain's vertices from `from` to `to` (mesh_edges + 1 of them).
+    std::vector<Index> vertices;
 };
 
 /// Every PolyCube edge of `planes` that runs between two corners, with its rest order from
