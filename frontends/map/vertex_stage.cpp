@@ -42,8 +42,19 @@ VertexStage run_once(const SimplicialMesh& mesh, const RestFrames<D>& frames,
     std::vector<std::array<Index, D + 1>> simplices(mesh.num_simplices());
     for (Index s = 0; s < mesh.num_simplices(); ++s)
         for (int k = 0; k <= D; ++k) simplices[s][k] = mesh.simplices(s, k);
+    std::vector<Index> shared;
+    for (const auto& plugin : terms.plugins) {
+        std::vector<Index> mine = plugin->shared_coordinates(result.positions, stage);
+        if (mine.empty()) continue;
+        if (!shared.empty()) {
+            throw InvalidArgumentError("vertex stage: two plugins share coordinates (" +
+                                       plugin->name() + " is the second)");
+        }
+        shared = std::move(mine);
+    }
     SimplexAssemblyEngine<D> engine = SimplexAssemblyEngine<D>::vertex_positions(
-        result.positions.leftCols(D), std::move(simplices), frames.corners, frames.edge_inverse);
+        result.positions.leftCols(D), std::move(simplices), frames.corners, frames.edge_inverse,
+        std::move(shared));
     // Simplices whose vertices are all fixed keep a constant energy: they are left out.
     std::vector<Index> moving;
     for (Index s = 0; s < mesh.num_simplices(); ++s) {

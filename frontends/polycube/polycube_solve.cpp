@@ -1,8 +1,10 @@
 #include "frontends/polycube/polycube_solve.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <sstream>
 #include <tuple>
 
@@ -86,8 +88,9 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
     }
 
     /// When `positions` (on the planes) has an inverted or degenerate tetrahedron: untangles
-    /// them in vertex variables (untangle.h), each plane's coordinate fixed as in the vertex stage
-    /// (and the vertices `fixed` flags, when given), and keeps the result when it is
+    /// them in vertex variables (untangle.h), each plane one variable as in the vertex stage, the
+    /// outermost ones fixed (and the vertices `fixed` flags, when given), and keeps the result
+    /// when it is
     /// inversion-free with every angle sum below its limit; otherwise leaves `positions`. Rest
     /// `mesh` and `positions` in the same units (any). Each try costs up to untangle_iterations
     /// steps, and far from planarity (cup: thousands folded after the first assembly
@@ -111,8 +114,15 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
         u.max_iterations = options_.untangle_iterations;
         u.max_time_seconds = left;
         u.num_threads = options_.threads;
-        u.fixed_coordinates.assign(3 * mesh.num_vertices(), 0);
-        for (const auto& [v, plane] : members_) u.fixed_coordinates[3 * v + plane_axis_[plane]] = 1;
+        // The planes move, each as one variable, but the two outermost of each axis: at a large
+        // eps the untangling energy is lowest with the map shrunk to a point.
+        u.shared_coordinates = shared_coordinates(positions, PluginStage<3>{});
+        u.fixed_coordinates.assign(u.shared_coordinates.size(), 0);
+        const std::vector<Index> leader = plane_leaders();
+        for (const auto& [low, high] : outer_planes(positions)) {
+            if (low < 0) continue;
+            u.fixed_coordinates[leader[low]] = u.fixed_coordinates[leader[high]] = 1;
+        }
         const PluginStage<3> stage;
         u.accept = [&](const Eigen::MatrixXd& x) { return std::isfinite(energy(x, stage)); };
         std::vector<unsigned char> none(mesh.num_vertices(), 0);
@@ -130,15 +140,43 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
         return bad;
     }
 
+    std::vector<Index> shared_coordinates(const Eigen::MatrixXd& positions,
+                                          const PluginStage<3>&) const override {
+        std::vector<Index> shared(3 * positions.rows());
+        std::iota(shared.begin(), shared.end(), Index(0));
+        const std::vector<Index> leader = plane_leaders();
+        for (const auto& [v, plane] : members_) shared[3 * v + plane_axis_[plane]] = leader[plane];
+        return shared;
+    }
+
     void add_vertex_terms(SimplexAssemblyEngine<3>& engine, const PluginStage<3>&) const override {
-        // Sliding: the coordinate along each of a vertex's planes' axes keeps its value. The
-        // angle barriers are not needed here: with every chart exactly in its plane, a boundary
+        // Sliding: each plane is one variable (shared_coordinates()), so its vertices move in it,
+        // a vertex of two planes along their line, a corner with its three, and the planes move
+        // too. E_C and the angle sums do not see translations and scalings: one plane per axis
+        // is fixed, and a second one on the axis of largest extent. The angle barriers are not
+        // needed here: with every chart exactly in its plane, a boundary
         // edge's dihedral sum can only be pi (inside a chart) or pi/2, 3 pi/2 (between two), plus
         // multiples of 2 pi, and a vertex's solid-angle sum likewise a multiple of pi/2; both are
         // continuous while no tetrahedron degenerates, which E_C prevents. So they keep the
         // values of the start, which energy() checked below their limits before the hand-over.
-        for (const auto& [v, plane] : members_)
-            engine.problem().set_fixed(engine.vertex_variables(v)[plane_axis_[plane]]);
+        const Eigen::MatrixXd positions = engine.positions(engine.problem().variables());
+        const std::vector<Index> leader = plane_leaders();
+        const auto outer = outer_planes(positions);
+        int widest = -1;
+        double widest_extent = -1.0;
+        for (int axis = 0; axis < 3; ++axis) {
+            const auto& [low, high] = outer[axis];
+            if (low < 0) continue;
+            engine.problem().set_fixed(engine.coordinate_variable(leader[low]));
+            const double extent =
+                positions(leader[high] / 3, axis) - positions(leader[low] / 3, axis);
+            if (extent > widest_extent) {
+                widest = axis;
+                widest_extent = extent;
+            }
+        }
+        if (widest >= 0)
+            engine.problem().set_fixed(engine.coordinate_variable(leader[outer[widest].second]));
     }
 
     double energy(const Eigen::MatrixXd& positions, const PluginStage<3>&) const override {
@@ -157,6 +195,29 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
     bool removes_rigid_motion() const override { return true; }
 
   private:
+    /// Per plane: the coordinate D v + axis of its first vertex, which its other vertices share.
+    std::vector<Index> plane_leaders() const {
+        std::vector<Index> leader(plane_axis_.size(), -1);
+        for (const auto& [v, plane] : members_)
+            if (leader[plane] < 0) leader[plane] = 3 * v + plane_axis_[plane];
+        return leader;
+    }
+
+    /// Per axis, its planes' lowest and highest at `positions` (#V x 3), -1 when it has none.
+    std::array<std::pair<int, int>, 3> outer_planes(const Eigen::MatrixXd& positions) const {
+        const std::vector<Index> leader = plane_leaders();
+        std::array<std::pair<int, int>, 3> out;
+        out.fill({-1, -1});
+        for (int plane = 0; plane < int(plane_axis_.size()); ++plane) {
+            const int axis = plane_axis_[plane];
+            auto at = [&](int p) { return positions(leader[p] / 3, axis); };
+            auto& [low, high] = out[axis];
+            if (low < 0 || at(plane) < at(low)) low = plane;
+            if (high < 0 || at(plane) > at(high)) high = plane;
+        }
+        return out;
+    }
+
     /// Planes (geometry/polycube_planes.h), and each boundary vertex's planes.
     void build_planes() {
         const PolycubePlanes planes =

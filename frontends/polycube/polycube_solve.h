@@ -3,7 +3,7 @@
 // driver (frontends/map/map_solve.h) and its engine, with no schedule of its own:
 //
 //   1. the cube-cover start (geometry/cube_cover.h): planar, axis-aligned charts, possibly folded;
-//      when folded, untangled in vertex variables with every plane's coordinate fixed
+//      when folded, untangled in vertex variables with every plane one variable
 //      (PolycubePluginOptions), and the driver starts from that map when it untangles;
 //   2. the driver's disassembly (closest similarity, 4.2), its assembly (r-SA, Eq. 10) and its
 //      vertex stage, minimizing the conformal barrier E_C (bound K, or none) with the PolyCube
@@ -15,9 +15,11 @@
 //          in A-form (energies/tet_angle_barriers.h; stars of more than kMaxAngleFan tetrahedra
 //          only in the vertex stage);
 //      and, in the vertex stage, the sliding boundary: the vertices of each plane (the charts of
-//      one axis that share vertices) are projected onto their mean coordinate and keep it
-//      exactly (the variable is fixed): a chart vertex slides in its plane, a vertex where two
-//      planes meet along their line, a corner of three stays. The planes fix the translation.
+//      one axis that share vertices) are projected onto their mean coordinate, which becomes one
+//      variable shared by all of them (AssemblyPlugin::shared_coordinates): a chart vertex
+//      slides in its plane, a vertex where two planes meet along their line, a corner moves
+//      with its three planes, and each plane moves as a whole. One plane per axis stays (the
+//      translation), and a second on the axis of largest extent (E_C does not see the scale).
 //      The hand-over test projects the recovered mesh onto the planes and untangles the
 //      tetrahedra this folds (PolycubePluginOptions); by default the first valid one is handed
 //      over (handover_ratio).
@@ -80,8 +82,9 @@ struct PolycubeSolve {
 /// How the plugin's projection (the hand-over's and the vertex stage's start) finishes: after
 /// moving each plane's vertices onto their mean coordinate, the tetrahedra this folds are
 /// untangled in vertex variables (untangle.h, Garanzha et al.'s regularized barrier) with each
-/// plane's coordinate fixed, as the vertex stage keeps it, and the result is kept once it is
-/// inversion-free with every angle sum below its limit. The driver then hands over a mesh
+/// plane one variable, as in the vertex stage, and the two outermost planes of each axis fixed
+/// (with fewer, the untangling energy at its first, large eps shrinks the map towards a point);
+/// the result is kept once it is inversion-free with every angle sum below its limit. The driver then hands over a mesh
 /// whose charts the assembly has made nearly, not exactly, planar, instead of assembling on.
 struct PolycubePluginOptions {
     int untangle_iterations = 100;  ///< most Newton steps per projection; 0: no untangling

@@ -13,9 +13,9 @@
 //     in E~_assembly) and barriers (add_barrier: on the barrier side of the schedule).
 //   - the vertex stage (vertex positions): first project(positions, stage) may move the start
 //     onto the plugin's constraint set (PolyCube: each chart's vertices onto one plane), returning
-//     false when it cannot; then add_vertex_terms(engine, stage) adds its terms and may fix
-//     single variables (engine.problem().set_fixed: a vertex sliding on a plane keeps the
-//     coordinate along its normal, exactly).
+//     false when it cannot; shared_coordinates(positions, stage) may make single coordinates of
+//     several vertices one variable (a PolyCube plane); then add_vertex_terms(engine, stage) adds
+//     its terms and may fix single variables (engine.problem().set_fixed).
 //   - the hand-over test and the vertex stage's feasibility: energy(positions, stage) is the
 //     plugin's barrier at a mesh (+inf when infeasible), added to the per-simplex energies, and the
 //     recovered mesh is handed over only once project() accepts it.
@@ -79,8 +79,16 @@ class AssemblyPlugin : public AssemblyPluginBase {
     virtual bool project(Eigen::MatrixXd& /*positions*/, const PluginStage<D>& /*stage*/) const {
         return true;
     }
-    /// The vertex stage: adds terms to `engine` (vertex layout, at the projected start) and may
-    /// fix variables.
+    /// The vertex stage: coordinates that are one variable (SimplexAssemblyEngine::
+    /// vertex_positions' `shared`: D #V entries, or empty for none) at the projected start
+    /// `positions`. PolyCube: the vertices of a plane share their coordinate along its normal, so
+    /// the plane moves as one. At most one plugin of a problem may share coordinates.
+    virtual std::vector<Index> shared_coordinates(const Eigen::MatrixXd& /*positions*/,
+                                                  const PluginStage<D>& /*stage*/) const {
+        return {};
+    }
+    /// The vertex stage: adds terms to `engine` (vertex layout, at the projected start, with the
+    /// shared coordinates above) and may fix variables.
     virtual void add_vertex_terms(SimplexAssemblyEngine<D>& engine,
                                   const PluginStage<D>& stage) const = 0;
     /// The plugin's barriers at the mesh `positions` (normalized): +inf when infeasible, 0 when it

@@ -205,12 +205,27 @@ TEST(PolycubeSolve, TheProjectionUntanglesOnThePlanes) {
     EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
     EXPECT_EQ(v.quality.inverted + v.quality.degenerate, 0);
     EXPECT_EQ(v.edge_angle_violations + v.vertex_angle_violations, 0);
-    // Sliding: a boundary vertex on one chart keeps its coordinate along the chart's axis.
-    for (Index b = 0; b < prepared.boundary.size(); ++b) {
-        const int axis = label_axis(prepared.labels[b]);
-        for (int i = 0; i < 3; ++i) {
-            const Index u = prepared.boundary.triangles(b, i);
-            EXPECT_NEAR(projected(u, axis), folded(u, axis), 1e-12);
+    // The planes move as wholes: every chart keeps one coordinate along its axis, and the
+    // outermost planes of each axis (held, so that the map cannot shrink) keep theirs.
+    for (int c = 0; c < prepared.charts.size(); ++c) {
+        const int axis = label_axis(prepared.charts.label[c]);
+        const double at =
+            projected(prepared.boundary.triangles(prepared.charts.members[c][0], 0), axis);
+        for (const Index b : prepared.charts.members[c])
+            for (int i = 0; i < 3; ++i)
+                EXPECT_EQ(projected(prepared.boundary.triangles(b, i), axis), at) << "chart " << c;
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+        for (const bool top : {false, true}) {
+            Index outer = -1;
+            for (Index b = 0; b < prepared.boundary.size(); ++b) {
+                if (label_axis(prepared.labels[b]) != axis) continue;
+                const Index u = prepared.boundary.triangles(b, 0);
+                if (outer < 0 || (top ? folded(u, axis) > folded(outer, axis)
+                                      : folded(u, axis) < folded(outer, axis)))
+                    outer = u;
+            }
+            EXPECT_NEAR(projected(outer, axis), folded(outer, axis), 1e-12);
         }
     }
     // Without untangling the projection leaves the fold for the driver to refuse.
