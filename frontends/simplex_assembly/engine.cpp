@@ -430,7 +430,6 @@ AssemblyRun SimplexAssemblyEngine<D>::run(const AssemblyEngineOptions& options,
     }
     newton.projection = options.projection;
     newton.projection_epsilon = options.projection_epsilon;
-    newton.line_search.restart_after_capped_step = options.restart_after_capped_step;
     newton.linear_solver = options.linear_solver;
     newton.num_threads = options.num_threads;
     double last_assembly = schedule ? kInfinity : 0.0;
