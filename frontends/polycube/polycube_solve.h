@@ -84,8 +84,9 @@ struct PolycubeSolve {
 /// untangled in vertex variables (untangle.h, Garanzha et al.'s regularized barrier) with each
 /// plane one variable, as in the vertex stage, and the two outermost planes of each axis fixed
 /// (with fewer, the untangling energy at its first, large eps shrinks the map towards a point);
-/// the result is kept once it is inversion-free with every angle sum below its limit. The driver then hands over a mesh
-/// whose charts the assembly has made nearly, not exactly, planar, instead of assembling on.
+/// the result is kept once it is inversion-free with every angle sum below its limit. The driver
+/// then hands over a mesh whose charts the assembly has made nearly, not exactly, planar, instead
+/// of assembling on.
 struct PolycubePluginOptions {
     int untangle_iterations = 100;  ///< most Newton steps per projection; 0: no untangling
     double max_time = kInfinity;    ///< seconds from the plugin's creation; none after
