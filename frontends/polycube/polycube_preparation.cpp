@@ -86,6 +86,21 @@ PreparedPolycube prepare_polycube(const SimplicialMesh& mesh, const std::string&
     std::vector<int> labels = read_labels(mesh, source, boundary, input, p, logger);
     validate_polycube_labels(mesh, boundary, labels,
                              p.label_source == "computed" ? source : p.label_source);
+    p.non_monotone = non_monotone_boundaries(boundary, mesh.vertices, labels,
+                                             polycube_charts(boundary, mesh.vertices, labels));
+    if (!p.non_monotone.empty()) {
+        const NonMonotoneBoundary& worst = p.non_monotone.front();
+        log_line(logger, (p.label_source == "computed" ? source : p.label_source) + ": " +
+                             std::to_string(p.non_monotone.size()) +
+                             " chart boundaries turn back along their PolyCube edge (the longest "
+                             "reversal: " +
+                             label_name(worst.label_a) + " | " + label_name(worst.label_b) + ", " +
+                             std::to_string(worst.strongly_backward) + " of its " +
+                             std::to_string(worst.edges) + " edges, at vertex " +
+                             std::to_string(worst.vertex) +
+                             "); the map must fold or flatten tetrahedra there unless the mesh "
+                             "makes room");
+    }
     p.read_labels_seconds = stage.lap();
 
     p.mesh = mesh;

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "frontends/polycube/polycube_verification.h"
+#include "geometry/polycube_boundary_monotonicity.h"
 #include "geometry/polycube_label_cleanup.h"
 #include "geometry/polycube_splits.h"
 #include "geometry/tet_boundary_fans.h"
@@ -55,6 +56,8 @@ struct PreparedPolycube {
     /// convention throughout, otherwise even = +axis along the outward normal.
     FlagSign output_sign = FlagSign::kOutward;
     std::optional<LabelCleanupReport> cleanup;  ///< computed labels
+    /// Chart boundaries of the labels (on `input`) that turn back along their PolyCube edge.
+    std::vector<NonMonotoneBoundary> non_monotone;
     PolycubeSplitReport splits;
     double read_labels_seconds = 0.0, splits_seconds = 0.0;
 

@@ -45,6 +45,16 @@ nlohmann::json polycube_preparation_json(const PreparedPolycube& p) {
                                 {"negative_tets", p.convention->negative_tets}};
     }
     if (p.cleanup) labels["cleanup"] = *p.cleanup;
+    nlohmann::json turning = nlohmann::json::array();
+    for (const NonMonotoneBoundary& b : p.non_monotone) {
+        turning.push_back({{"labels", {label_name(b.label_a), label_name(b.label_b)}},
+                           {"edges", b.edges},
+                           {"strongly_backward_edges", b.strongly_backward},
+                           {"length", b.length},
+                           {"backward_travel", b.backward_travel},
+                           {"vertex", b.vertex}});
+    }
+    labels["non_monotone_boundaries"] = turning;
     j["labels"] = labels;
     j["splits"] = {{"squashed_before", squashed_json(p.splits.before)},
                    {"squashed_after", squashed_json(p.splits.after)},

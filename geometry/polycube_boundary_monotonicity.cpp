@@ -1,0 +1,87 @@
+#include "geometry/polycube_boundary_monotonicity.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+namespace sa {
+
+namespace {
+
+using ChartPair = std::pair<int, int>;
+
+ChartPair chart_pair(int a, int b) {
+    return a < b ? ChartPair{a, b} : ChartPair{b, a};
+}
+
+/// Side i of boundary triangle b (from corner i to corner i + 1, triangle b on its left) as a
+/// rest edge vector.
+Eigen::Vector3d side_vector(const TetBoundary& boundary, const Eigen::MatrixXd& positions, Index b,
+                            int i) {
+    const Index u = boundary.triangles(b, i);
+    const Index v = boundary.triangles(b, (i + 1) % 3);
+    return (positions.row(v) - positions.row(u)).transpose();
+}
+
+/// h . (n_left x n_right): the same for either triangle of the edge taken as the left one.
+double along_polycube_edge(const Eigen::Vector3d& h, int left_label, int right_label) {
+    return h.dot(label_direction(left_label).cross(label_direction(right_label)));
+}
+
+/// Calls visit(b, i, n) once per boundary edge between labels of different axes (b < n).
+template <typename Visit>
+void for_each_chart_boundary_edge(const TetBoundary& boundary, const std::vector<int>& labels,
+                                  Visit&& visit) {
+    for (Index b = 0; b < boundary.size(); ++b) {
+        for (int i = 0; i < 3; ++i) {
+            const Index n = boundary.adjacent[b][i];
+            if (n > b && label_axis(labels[n]) != label_axis(labels[b])) visit(b, i, n);
+        }
+    }
+}
+
+}  // namespace
+
+std::vector<NonMonotoneBoundary> non_monotone_boundaries(const TetBoundary& boundary,
+                                                         const Eigen::MatrixXd& positions,
+                                                         const std::vector<int>& labels,
+                                                         const PolycubeCharts& charts,
+                                                         double strong_cosine) {
+    struct Edge {
+        double along, length;
+        Index vertex;
+    };
+    std::map<ChartPair, std::vector<Edge>> pairs;
+    for_each_chart_boundary_edge(boundary, labels, [&](Index b, int i, Index n) {
+        const Eigen::Vector3d h = side_vector(boundary, positions, b, i);
+        pairs[chart_pair(charts.chart_of[b], charts.chart_of[n])].push_back(
+            {along_polycube_edge(h, labels[b], labels[n]), h.norm(), boundary.triangles(b, i)});
+    });
+    std::vector<NonMonotoneBoundary> found;
+    for (const auto& [key, edges] : pairs) {
+        double net = 0.0;
+        for (const Edge& e : edges) net += e.along;
+        const double sign = net >= 0.0 ? 1.0 : -1.0;
+        NonMonotoneBoundary boundary_found;
+        boundary_found.chart_a = key.first;
+        boundary_found.chart_b = key.second;
+        boundary_found.label_a = charts.label[key.first];
+        boundary_found.label_b = charts.label[key.second];
+        boundary_found.edges = static_cast<Index>(edges.size());
+        for (const Edge& e : edges) {
+            boundary_found.length += e.length;
+            if (sign * e.along < 0.0) boundary_found.backward_travel += -sign * e.along;
+            if (sign * e.along < -strong_cosine * e.length) {
+                if (boundary_found.strongly_backward++ == 0) boundary_found.vertex = e.vertex;
+            }
+        }
+        if (boundary_found.strongly_backward > 0) found.push_back(boundary_found);
+    }
+    std::stable_sort(found.begin(), found.end(), [](const auto& x, const auto& y) {
+        return x.backward_travel > y.backward_travel;
+    });
+    return found;
+}
+
+}  // namespace sa
