@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <utility>
 
 namespace sa {
@@ -50,33 +51,49 @@ std::vector<NonMonotoneBoundary> non_monotone_boundaries(const TetBoundary& boun
                                                          double strong_cosine) {
     struct Edge {
         double along, length;
-        Index vertex;
+        Index from, to;
     };
     std::map<ChartPair, std::vector<Edge>> pairs;
     for_each_chart_boundary_edge(boundary, labels, [&](Index b, int i, Index n) {
         const Eigen::Vector3d h = side_vector(boundary, positions, b, i);
         pairs[chart_pair(charts.chart_of[b], charts.chart_of[n])].push_back(
-            {along_polycube_edge(h, labels[b], labels[n]), h.norm(), boundary.triangles(b, i)});
+            {along_polycube_edge(h, labels[b], labels[n]), h.norm(), boundary.triangles(b, i),
+             boundary.triangles(b, (i + 1) % 3)});
     });
+    // Two charts may meet along several separate boundaries (around a handle, say), each with
+    // its own direction: the edges of a pair are split into connected chains (union-find on
+    // their vertices).
+    std::vector<Index> parent(positions.rows());
+    std::iota(parent.begin(), parent.end(), Index(0));
+    const auto root = [&](Index v) {
+        while (parent[v] != v) v = parent[v] = parent[parent[v]];
+        return v;
+    };
     std::vector<NonMonotoneBoundary> found;
     for (const auto& [key, edges] : pairs) {
-        double net = 0.0;
-        for (const Edge& e : edges) net += e.along;
-        const double sign = net >= 0.0 ? 1.0 : -1.0;
-        NonMonotoneBoundary boundary_found;
-        boundary_found.chart_a = key.first;
-        boundary_found.chart_b = key.second;
-        boundary_found.label_a = charts.label[key.first];
-        boundary_found.label_b = charts.label[key.second];
-        boundary_found.edges = static_cast<Index>(edges.size());
-        for (const Edge& e : edges) {
-            boundary_found.length += e.length;
-            if (sign * e.along < 0.0) boundary_found.backward_travel += -sign * e.along;
-            if (sign * e.along < -strong_cosine * e.length) {
-                if (boundary_found.strongly_backward++ == 0) boundary_found.vertex = e.vertex;
+        for (const Edge& e : edges) parent[root(e.from)] = root(e.to);
+        std::map<Index, std::vector<const Edge*>> chains;
+        for (const Edge& e : edges) chains[root(e.from)].push_back(&e);
+        for (const auto& [chain_root, chain] : chains) {
+            double net = 0.0;
+            for (const Edge* e : chain) net += e->along;
+            const double sign = net >= 0.0 ? 1.0 : -1.0;
+            NonMonotoneBoundary turning;
+            turning.chart_a = key.first;
+            turning.chart_b = key.second;
+            turning.label_a = charts.label[key.first];
+            turning.label_b = charts.label[key.second];
+            turning.edges = static_cast<Index>(chain.size());
+            for (const Edge* e : chain) {
+                turning.length += e->length;
+                if (sign * e->along < 0.0) turning.backward_travel += -sign * e->along;
+                if (sign * e->along < -strong_cosine * e->length) {
+                    if (turning.strongly_backward++ == 0) turning.vertex = e->from;
+                }
             }
+            if (turning.strongly_backward > 0) found.push_back(turning);
         }
-        if (boundary_found.strongly_backward > 0) found.push_back(boundary_found);
+        for (const Edge& e : edges) parent[e.from] = e.from, parent[e.to] = e.to;
     }
     std::stable_sort(found.begin(), found.end(), [](const auto& x, const auto& y) {
         return x.backward_travel > y.backward_travel;

@@ -7,10 +7,11 @@
 // both ways along d (a "turning point": the boundary runs past a corner and comes back, or is
 // U-shaped) can only become straight if the map reverses part of it, which folds or flattens the
 // tetrahedra around it unless the mesh can make room (validity-first PolyCube labelling, Dumery
-// et al. 2024, counts such turning points as invalid). Per pair of adjacent charts whose labels
-// have different axes, the boundary's direction is the sign of sum_e h_e . d over its edges (h_e
-// the rest edge vector); an edge is backward when h_e . d has the other sign, strongly backward
-// when h_e . d < -strong_cosine |h_e| (a zigzag across d is not).
+// et al. 2024, counts such turning points as invalid). A boundary is a connected chain of mesh
+// edges between two charts whose labels have different axes (two charts may meet along several);
+// its direction is the sign of sum_e h_e . d over its edges (h_e the rest edge vector); an edge
+// is backward when h_e . d has the other sign, strongly backward when h_e . d < -strong_cosine
+// |h_e| (a zigzag across d is not).
 
 #include <vector>
 
@@ -18,7 +19,7 @@
 
 namespace sa {
 
-/// A chart boundary with strongly backward edges.
+/// A chart boundary (one chain) with strongly backward edges.
 struct NonMonotoneBoundary {
     int chart_a = -1, chart_b = -1;  ///< chart_a < chart_b (PolycubeCharts numbering)
     int label_a = -1, label_b = -1;  ///< their labels (0..5)
