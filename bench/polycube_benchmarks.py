@@ -85,7 +85,8 @@ def run_solve(a, name, mesh, labels, work):
 
 
 def solve_table(rows):
-    lines = ['| mesh | tets (after splits) | flipped at start | charts | δ_con max / mean | '
+    lines = ['| mesh | tets (after splits) | flipped at start | charts (turning back) | '
+             'δ_con max / mean | '
              'δ_iso max / mean | reached bound | rounds | assembly + vertex-stage iterations | '
              'time (s) | peak memory (GB) | verified (exit) | check_map.py: inverted / degenerate |',
              '|---|---|---|---|---|---|---|---|---|---|---|---|---|']
@@ -102,7 +103,9 @@ def solve_table(rows):
         lines.append('| %s | %s | %s | %s | %s / %s | %s / %s | %s | %s | %s | %s | %s | %s (%d) | '
                      '%s / %s |' % (
                          r['name'], prep['splits']['tets'],
-                         start['inverted'], prep['labels']['charts'],
+                         start['inverted'], '%d (%d)' % (
+                             prep['labels']['charts'],
+                             len(prep['labels'].get('non_monotone_boundaries', []))),
                          fmt(q['conformal']['max'], 4), fmt(q['conformal']['mean'], 4),
                          fmt(q['isometric']['max'], 4), fmt(q['isometric']['mean'], 4),
                          fmt(rep['reached_bound'], 4) if rep['reached_bound'] != 'inf' else 'inf',
@@ -139,7 +142,7 @@ def run_case(a, name, mesh, labels, work):
 
 
 def table(rows):
-    lines = ['| mesh | tets | labels | charts (clean-up) | squashed tets / int. edges / bnd. edges / '
+    lines = ['| mesh | tets | labels | charts (clean-up; turning back) | squashed tets / int. edges / bnd. edges / '
              'bnd. triangles | splits (edge, face) -> tets | cube cover: inverted / degenerate '
              '(check_map.py) | δ_con max / mean | verified start | time (s): labels, splits, '
              'cube cover, verify | peak memory (GB) |',
@@ -152,6 +155,7 @@ def table(rows):
         charts = ('%d -> %d, %d triangles relabelled' % (c['charts_before'], c['charts_after'],
                                                           c['triangles_changed'])
                   if c else str(r['charts']))
+        charts += '; %s' % r.get('non_monotone_boundaries', '-')
         labels = 'computed' if r['labels'] == 'computed' else os.path.basename(r['labels'])
         if 'convention' in r:
             labels += ' (%s)' % ('inward' if 'inward normal' in r['convention']

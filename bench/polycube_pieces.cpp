@@ -57,6 +57,7 @@ int main(int argc, char** argv) {
                             {"opposite", p.cleanup->merged_opposite}};
         }
         j["charts"] = p.charts.size();
+        j["non_monotone_boundaries"] = p.non_monotone.size();
         const sa::SquashedElements& s = p.splits.before;
         j["squashed"] = {{"tets", s.tets},
                          {"interior_edges", s.interior_edges},
