@@ -6,12 +6,12 @@
 // +d at a convex PolyCube edge and to -d at a concave one. A chart boundary whose rest edges go
 // both ways along d (a "turning point": the boundary runs past a corner and comes back, or is
 // U-shaped) can only become straight if the map reverses part of it, which folds or flattens the
-// tetrahedra around it unless the mesh can make room (validity-first PolyCube labelling, Dumery
-// et al. 2024, counts such turning points as invalid). A boundary is a connected chain of mesh
-// edges between two charts whose labels have different axes (two charts may meet along several);
-// its direction is the sign of sum_e h_e . d over its edges (h_e the rest edge vector); an edge
-// is backward when h_e . d has the other sign, strongly backward when h_e . d < -strong_cosine
-// |h_e| (a zigzag across d is not).
+// tetrahedra around it unless the mesh can make room ("Validity-first automatic polycube
+// labeling for CAD models", 2024, counts such turning points as invalid). A boundary is a connected
+// chain of mesh edges between two charts whose labels have different axes (two charts may meet
+// along several); its direction is the sign of sum_e h_e . d over its edges (h_e the rest edge
+// vector); an edge is backward when h_e . d has the other sign, strongly backward when h_e . d <
+// -strong_cosine |h_e| (a zigzag across d is not).
 
 #include <vector>
 
@@ -27,7 +27,7 @@ struct NonMonotoneBoundary {
     Index strongly_backward = 0;     ///< of which strongly backward
     double length = 0.0;             ///< rest length of the boundary (rest units)
     double backward_travel = 0.0;    ///< sum over backward edges of |h_e . d| (rest units)
-    Index vertex = -1;               ///< a vertex of a strongly backward edge
+    Index vertex = -1;               ///< a vertex of a strongly backward edge (0-based)
 };
 
 /// The non-monotone boundaries of `labels` (one per boundary triangle, 0..5) at rest `positions`

@@ -90,16 +90,17 @@ PreparedPolycube prepare_polycube(const SimplicialMesh& mesh, const std::string&
                                              polycube_charts(boundary, mesh.vertices, labels));
     if (!p.non_monotone.empty()) {
         const NonMonotoneBoundary& worst = p.non_monotone.front();
-        log_line(logger, (p.label_source == "computed" ? source : p.label_source) + ": " +
-                             std::to_string(p.non_monotone.size()) +
-                             " chart boundaries turn back along their PolyCube edge (the longest "
-                             "reversal: " +
-                             label_name(worst.label_a) + " | " + label_name(worst.label_b) + ", " +
-                             std::to_string(worst.strongly_backward) + " of its " +
-                             std::to_string(worst.edges) + " edges, at vertex " +
-                             std::to_string(worst.vertex) +
-                             "); the map must fold or flatten tetrahedra there unless the mesh "
-                             "makes room");
+        log_line(logger,
+                 (p.label_source == "computed" ? source : p.label_source) + ": " +
+                     std::to_string(p.non_monotone.size()) +
+                     " chart boundaries turn back along their PolyCube edge (the longest "
+                     "reversal: " +
+                     label_name(worst.label_a) + " | " + label_name(worst.label_b) + ", " +
+                     std::to_string(worst.strongly_backward) + " of its " +
+                     std::to_string(worst.edges) + " edges, at vertex " +
+                     std::to_string(worst.vertex) +
+                     ", 0-based); the map must fold or flatten tetrahedra there unless the mesh "
+                     "makes room");
     }
     p.read_labels_seconds = stage.lap();
 
