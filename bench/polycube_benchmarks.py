@@ -142,8 +142,8 @@ def run_case(a, name, mesh, labels, work):
 
 
 def table(rows):
-    lines = ['| mesh | tets | labels | charts (clean-up; turning back) | squashed tets / int. edges / bnd. edges / '
-             'bnd. triangles | splits (edge, face) -> tets | cube cover: inverted / degenerate '
+    lines = ['| mesh | tets | labels | charts (clean-up; turning back) | squashed tets / int. edges / '
+             'bnd. edges / bnd. triangles | splits (edge, face) -> tets | cube cover: inverted / degenerate '
              '(check_map.py) | δ_con max / mean | verified start | time (s): labels, splits, '
              'cube cover, verify | peak memory (GB) |',
              '|---|---|---|---|---|---|---|---|---|---|---|']
