@@ -50,6 +50,9 @@ CLI::App* add_polycube_command(CLI::App& app, PolycubeArguments& a) {
         "from the geometry), or one per triangle of --label-surface; computed when absent");
     polycube->add_option("--label-surface", a.label_surface,
                          "the boundary surface (.obj) that per-triangle --labels refer to");
+    polycube->add_flag("--keep-orientation", a.keep_orientation,
+                       "computed labels in the input's own axes (by default the mesh is "
+                       "labelled turned so that its boundary faces the axes best)");
     polycube->add_option("--bound", a.bound, "bound K on the conformal distortion, > 1 or inf")
         ->capture_default_str();
     polycube->add_flag("--optimal-bound", a.optimal_bound,
@@ -86,6 +89,11 @@ PolycubePlan check_polycube_arguments(const PolycubeArguments& a) {
             plan.labels.surface = a.label_surface;
         }
     }
+    if (a.keep_orientation && !a.labels.empty()) {
+        throw InvalidArgumentError("--keep-orientation: only for computed labels (--labels " +
+                                   a.labels + " are in the input's own axes already)");
+    }
+    plan.labels.orient = !a.keep_orientation;
     plan.bound = parse_bound(a.bound);
     if (a.optimal_bound && std::isfinite(plan.bound)) {
         throw InvalidArgumentError("--bound " + a.bound +

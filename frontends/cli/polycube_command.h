@@ -29,6 +29,7 @@ struct PolycubeArguments {
     double max_time = kInfinity;  ///< seconds, > 0; inf: no limit
     int threads = 0;
     bool optimal_bound = false, force = false, quiet = false, no_png = false;
+    bool keep_orientation = false;
 };
 
 /// Adds the `polycube` subcommand to `app`, filling `arguments` when parsed.

@@ -46,7 +46,7 @@ void write_polycube_meshes(const std::string& out, const PreparedPolycube& prepa
                            const Eigen::MatrixXd& positions) {
     check_positions(prepared, positions, "write_polycube_meshes");
     const std::string rest = polycube_rest_path(out), flags = polycube_flags_path(out);
-    write_medit(rest, prepared.mesh.vertices, prepared.mesh.simplices);
+    write_medit(rest, prepared.rest_positions(), prepared.mesh.simplices);
     write_facet_flags(flags, prepared.output_flags());
     write_medit(out, positions, prepared.mesh.simplices);
 }
@@ -62,7 +62,7 @@ void write_polycube_vtu(const std::string& path, const PreparedPolycube& prepare
         for (int k = 0; k < 4; ++k) labels.values(t, k) = flags[4 * t + k];
     }
     cells.push_back(std::move(labels));
-    DataArray rest{"rest", prepared.mesh.vertices, false};
+    DataArray rest{"rest", prepared.rest_positions(), false};
     if (path.size() >= 4 && path.substr(path.size() - 4) == ".vtk") {
         write_vtk(path, positions, prepared.mesh.simplices, {rest}, cells);
     } else {

@@ -1,5 +1,6 @@
 #include "frontends/polycube/polycube_preparation.h"
 
+#include <cstdio>
 #include <sstream>
 
 #include "geometry/io/mesh_file.h"
@@ -12,9 +13,10 @@ namespace sa {
 
 namespace {
 
-std::vector<int> read_labels(const SimplicialMesh& mesh, const std::string& source,
-                             const TetBoundary& boundary, const PolycubeLabelInput& input,
-                             PreparedPolycube& p, const Logger& logger) {
+/// Labels from a .flags file, or from per-triangle labels of a boundary surface.
+std::vector<int> read_file_labels(const SimplicialMesh& mesh, const TetBoundary& boundary,
+                                  const PolycubeLabelInput& input, PreparedPolycube& p,
+                                  const Logger& logger) {
     if (!input.flags.empty()) {
         p.label_source = input.flags;
         const std::vector<int> flags = read_facet_flags(input.flags, mesh.num_simplices());
@@ -47,11 +49,54 @@ std::vector<int> read_labels(const SimplicialMesh& mesh, const std::string& sour
         log_line(logger, input.labels + ": " + convention.describe());
         return labels;
     }
-    p.label_source = "computed";
-    std::vector<int> labels = closest_axis_labels(boundary, mesh.vertices);
-    const LabelCleanupReport cleanup =
-        clean_polycube_labels(boundary, mesh.vertices, labels, input.cleanup);
-    p.cleanup = cleanup;
+    throw InvalidArgumentError("read_file_labels: no label file");
+}
+
+/// Closest-axis labels of the mesh turned by `rotation`, cleaned, and what makes them usable.
+struct OrientedLabelling {
+    PolycubeOrientation orientation;
+    SimplicialMesh oriented;  ///< the input with its vertices turned: R x
+    std::vector<int> labels;
+    LabelCleanupReport cleanup;
+    std::string error;  ///< why they cannot be used (empty: they can)
+    std::vector<NonMonotoneBoundary> turning;
+};
+
+OrientedLabelling labelling_in(const SimplicialMesh& mesh, const std::string& source,
+                               const TetBoundary& boundary, const PolycubeOrientation& orientation,
+                               const LabelCleanupOptions& options) {
+    OrientedLabelling l;
+    l.orientation = orientation;
+    l.oriented = mesh;
+    l.oriented.vertices = mesh.vertices * orientation.rotation.transpose();
+    l.labels = closest_axis_labels(boundary, l.oriented.vertices);
+    l.cleanup = clean_polycube_labels(boundary, l.oriented.vertices, l.labels, options);
+    if (!l.cleanup.clean) {
+        l.error = source + ": the computed labelling could not be cleaned in " +
+                  std::to_string(l.cleanup.rounds) + " rounds; give one with --labels";
+        return l;
+    }
+    try {
+        validate_polycube_labels(l.oriented, boundary, l.labels, source);
+    } catch (const InputError& e) {
+        l.error = e.what();
+        return l;
+    }
+    l.turning = non_monotone_boundaries(boundary, l.oriented.vertices, l.labels,
+                                        polycube_charts(boundary, l.oriented.vertices, l.labels));
+    return l;
+}
+
+/// Whether labelling `b` is to be preferred to `a`: usable where `a` is not, else fewer chart
+/// boundaries that turn back, else a better l1 alignment (polycube_orientation.h).
+bool preferred(const OrientedLabelling& b, const OrientedLabelling& a) {
+    if (a.error.empty() != b.error.empty()) return b.error.empty();
+    if (b.turning.size() != a.turning.size()) return b.turning.size() < a.turning.size();
+    return b.orientation.energy < a.orientation.energy * (1.0 - 1e-9);
+}
+
+void log_labelling(const OrientedLabelling& l, const std::string& source, const Logger& logger) {
+    const LabelCleanupReport& cleanup = l.cleanup;
     std::ostringstream line;
     line << source << ": labels by closest axis, " << cleanup.charts_before << " charts; clean-up "
          << cleanup.charts_after << " charts, " << cleanup.triangles_changed
@@ -59,14 +104,17 @@ std::vector<int> read_labels(const SimplicialMesh& mesh, const std::string& sour
          << cleanup.merged_few_neighbours << " with few neighbours, " << cleanup.merged_opposite
          << " beside their opposite; " << cleanup.teeth << " teeth)";
     log_line(logger, line.str());
-    if (!cleanup.clean) {
-        throw InputError(source + ": the computed labelling could not be cleaned in " +
-                         std::to_string(cleanup.rounds) + " rounds; give one with --labels");
-    }
-    return labels;
 }
 
 }  // namespace
+
+Eigen::MatrixXd PreparedPolycube::rest_positions() const {
+    if (!orientation) return mesh.vertices;
+    // Rows are turned as x R^T; the input's own vertices are copied, not turned back.
+    Eigen::MatrixXd x = mesh.vertices * orientation->rotation;
+    x.topRows(input.num_vertices()) = input.vertices;
+    return x;
+}
 
 std::vector<int> PreparedPolycube::output_flags() const {
     return facet_flags(boundary, mesh.num_simplices(), labels, output_sign);
@@ -83,11 +131,49 @@ PreparedPolycube prepare_polycube(const SimplicialMesh& mesh, const std::string&
     Stopwatch stage;
     const MeshTopology topology = mesh_topology(mesh, source);
     const TetBoundary boundary = tet_boundary(mesh, topology);
-    std::vector<int> labels = read_labels(mesh, source, boundary, input, p, logger);
-    validate_polycube_labels(mesh, boundary, labels,
-                             p.label_source == "computed" ? source : p.label_source);
-    p.non_monotone = non_monotone_boundaries(boundary, mesh.vertices, labels,
-                                             polycube_charts(boundary, mesh.vertices, labels));
+    SimplicialMesh oriented = mesh;
+    std::vector<int> labels;
+    if (input.flags.empty() && input.labels.empty() && input.surface.empty()) {
+        // Computed labels: in the input's axes and in the orientation whose boundary faces the
+        // axes best, the better of the two labellings (preferred()).
+        p.label_source = "computed";
+        OrientedLabelling chosen =
+            labelling_in(mesh, source, boundary, PolycubeOrientation{}, input.cleanup);
+        chosen.orientation.energy = chosen.orientation.energy_identity = l1_alignment(
+            boundary_area_vectors(boundary, mesh.vertices), Eigen::Matrix3d::Identity());
+        if (input.orient) {
+            const PolycubeOrientation best = polycube_orientation(boundary, mesh.vertices);
+            if (best.angle_degrees > 0.0) {
+                OrientedLabelling turned =
+                    labelling_in(mesh, source, boundary, best, input.cleanup);
+                auto usable = [](const OrientedLabelling& l) {
+                    return l.error.empty() ? std::to_string(l.turning.size()) + " turning back"
+                                           : std::string("unusable");
+                };
+                char line[320];
+                std::snprintf(line, sizeof line,
+                              "%s: orientation: turned by %.2f degrees the boundary faces the "
+                              "axes best (l1 alignment %.4f, %.4f as given; 1 = every triangle "
+                              "faces an axis); labels there: %s, as given: %s",
+                              source.c_str(), best.angle_degrees, best.energy, best.energy_identity,
+                              usable(turned).c_str(), usable(chosen).c_str());
+                log_line(logger, line);
+                if (preferred(turned, chosen)) chosen = std::move(turned);
+            }
+        }
+        log_labelling(chosen, source, logger);
+        if (!chosen.error.empty()) throw InputError(chosen.error);
+        p.orientation = chosen.orientation;
+        p.cleanup = chosen.cleanup;
+        p.non_monotone = chosen.turning;
+        labels = std::move(chosen.labels);
+        oriented = std::move(chosen.oriented);
+    } else {
+        labels = read_file_labels(mesh, boundary, input, p, logger);
+        validate_polycube_labels(mesh, boundary, labels, p.label_source);
+        p.non_monotone = non_monotone_boundaries(boundary, mesh.vertices, labels,
+                                                 polycube_charts(boundary, mesh.vertices, labels));
+    }
     if (!p.non_monotone.empty()) {
         const NonMonotoneBoundary& worst = p.non_monotone.front();
         log_line(logger,
@@ -104,7 +190,7 @@ PreparedPolycube prepare_polycube(const SimplicialMesh& mesh, const std::string&
     }
     p.read_labels_seconds = stage.lap();
 
-    p.mesh = mesh;
+    p.mesh = oriented;
     p.facet_labels = facet_flags(boundary, mesh.num_simplices(), labels);
     p.splits = split_squashed_elements(p.mesh, p.facet_labels, source);
     p.topology = mesh_topology(p.mesh, source);

@@ -1,8 +1,9 @@
 #pragma once
 // The input side of `sa polycube` (issue 21), everything before the solve: a tetrahedral mesh and
 // its boundary labelling (from a .flags file, from per-triangle labels of a boundary surface, or
-// computed by closest axis and cleaned), checked, and the mesh split where planarity would
-// squash it (geometry/polycube_splits.h).
+// computed by closest axis and cleaned, in the input's axes or turned by
+// polycube_orientation(), whichever labelling is better), checked, and the mesh split where
+// planarity would squash it (geometry/polycube_splits.h).
 //
 //   PolycubeLabelInput input;                 // empty: compute the labels
 //   input.flags = "S1.flags";
@@ -21,6 +22,7 @@
 #include "frontends/polycube/polycube_verification.h"
 #include "geometry/polycube_boundary_monotonicity.h"
 #include "geometry/polycube_label_cleanup.h"
+#include "geometry/polycube_orientation.h"
 #include "geometry/polycube_splits.h"
 #include "geometry/tet_boundary_fans.h"
 #include "optim/logger.h"
@@ -33,12 +35,19 @@ struct PolycubeLabelInput {
     std::string labels;           ///< one label per triangle of `surface`
     std::string surface;          ///< the boundary surface that `labels` refers to
     LabelCleanupOptions cleanup;  ///< for computed labels
+    /// Computed labels: label (and map) the input turned by polycube_orientation(), which the
+    /// map does not otherwise see; false: in the input's own axes.
+    bool orient = true;
 };
 
 struct PreparedPolycube {
     SimplicialMesh input;  ///< the mesh as given
+    /// Computed labels: the rotation R that `mesh` is turned by (its vertices are R x of the
+    /// input's), chosen so that the labels face the axes best; empty otherwise (R = I).
+    std::optional<PolycubeOrientation> orientation;
     /// The rest mesh of the map: the input after the splits (its vertices and tetrahedra first,
-    /// in their order; a split tetrahedron's first child keeps its index).
+    /// in their order; a split tetrahedron's first child keeps its index), turned by
+    /// `orientation`. The map's energies do not see the turn.
     SimplicialMesh mesh;
     std::vector<int> facet_labels;  ///< per tet facet of `mesh`: -1 or 0..5 (+X, -X, ..., -Z)
     MeshTopology topology;
@@ -63,6 +72,9 @@ struct PreparedPolycube {
 
     /// Pointers into this object, for verify_polycube().
     PolycubeLayout layout() const { return {&mesh, &boundary, &charts, &fans, &stars}; }
+    /// `mesh`'s vertices in the input's frame (#V x 3): the input's own, then the splits' new
+    /// vertices turned back. What OUT.rest.mesh holds.
+    Eigen::MatrixXd rest_positions() const;
     /// The .flags array of `mesh` in output_sign's convention.
     std::vector<int> output_flags() const;
 };

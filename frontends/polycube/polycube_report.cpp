@@ -45,6 +45,16 @@ nlohmann::json polycube_preparation_json(const PreparedPolycube& p) {
                                 {"negative_tets", p.convention->negative_tets}};
     }
     if (p.cleanup) labels["cleanup"] = *p.cleanup;
+    if (p.orientation) {
+        const Eigen::Matrix3d& r = p.orientation->rotation;
+        labels["orientation"] = {{"rotation",
+                                  {{r(0, 0), r(0, 1), r(0, 2)},
+                                   {r(1, 0), r(1, 1), r(1, 2)},
+                                   {r(2, 0), r(2, 1), r(2, 2)}}},
+                                 {"angle_degrees", p.orientation->angle_degrees},
+                                 {"l1_alignment", p.orientation->energy},
+                                 {"l1_alignment_as_given", p.orientation->energy_identity}};
+    }
     nlohmann::json turning = nlohmann::json::array();
     for (const NonMonotoneBoundary& b : p.non_monotone) {
         turning.push_back({{"labels", {label_name(b.label_a), label_name(b.label_b)}},

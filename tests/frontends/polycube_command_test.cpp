@@ -66,6 +66,11 @@ TEST_F(PolycubeCommand, ArgumentsAreChecked) {
     EXPECT_EQ(plan.flags, path("out.flags"));
     EXPECT_EQ(plan.max_time, 20.0);
     EXPECT_TRUE(plan.labels.flags.empty() && plan.labels.labels.empty());
+    EXPECT_TRUE(plan.labels.orient);
+    EXPECT_EQ(
+        check({"--mesh", path("L.mesh"), "--out", path("out.mesh"), "--keep-orientation"}, &plan),
+        "");
+    EXPECT_FALSE(plan.labels.orient);
 
     std::ofstream(path("L.flags")) << "0\n";
     std::ofstream(path("l.txt")) << "0\n";
@@ -94,6 +99,9 @@ TEST_F(PolycubeCommand, ArgumentsAreChecked) {
     fails({"--mesh", path("L.mesh"), "--out", path("o.mesh"), "--bound", "0.5"}, "--bound 0.5");
     fails({"--mesh", path("L.mesh"), "--label-surface", path("b.obj"), "--out", path("o.mesh")},
           "needs --labels");
+    fails({"--mesh", path("L.mesh"), "--labels", path("L.flags"), "--keep-orientation", "--out",
+           path("o.mesh")},
+          "only for computed labels");
     fails({"--mesh", path("L.mesh"), "--out", path("o.mesh"), "--png", path("p.jpg")}, ".png");
     fails({"--mesh", path("L.mesh"), "--out", path("o.mesh"), "--max-time", "-1"}, "--max-time");
     fails({"--mesh", path("L.mesh"), "--out", path("o.mesh"), "--report", path("o.flags")},
