@@ -166,7 +166,7 @@ void write_polycube_outputs(const PolycubePlan& plan, const PreparedPolycube& pr
                                    std::to_string(prepared.mesh.num_vertices()) + " x 3");
     }
     write(plan.rest, [&](const std::string& path) {
-        write_medit(path, prepared.mesh.vertices, prepared.mesh.simplices);
+        write_medit(path, prepared.rest_positions(), prepared.mesh.simplices);
     });
     write(plan.flags,
           [&](const std::string& path) { write_facet_flags(path, prepared.output_flags()); });

@@ -166,6 +166,12 @@ TEST_F(PolycubeCommand, EndToEndOnAGeneratedMesh) {
     const MeshFile rest = read_mesh_file(path("o.rest.mesh"));
     const MeshFile out = read_mesh_file(path("o.mesh"));
     ASSERT_EQ(rest.mesh.simplices, out.mesh.simplices);
+    // In the input's frame, though the labels were computed on it turned (report).
+    std::ifstream report_file(path("o.json"));
+    const nlohmann::json labels_report =
+        nlohmann::json::parse(report_file)["preparation"]["labels"];
+    EXPECT_GT(labels_report["orientation"]["angle_degrees"].get<double>(), 0.0);
+    EXPECT_EQ(rest.mesh.vertices.topRows(mesh.num_vertices()), mesh.vertices);
     PolycubeLabelInput labels;
     labels.flags = path("o.flags");
     const PreparedPolycube again = prepare_polycube(rest.mesh, path("o.rest.mesh"), labels);
