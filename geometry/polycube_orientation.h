@@ -10,8 +10,8 @@
 // PolyCube map does not see R otherwise: its energies (conformal distortion, angle sums) are
 // invariant under rotations of the rest shape.
 //
-// The search: the identity, a grid of rotations over the cube group's fundamental region (each
-// rotation agrees with 23 others up to relabelling), then a pattern search (small rotations
+// The search: the identity, a 10-degree grid of Euler angles that meets every rotation up to
+// the cube's 24 rotations (which E cannot tell apart), then a pattern search (small rotations
 // about x, y and z, halving the step) from the best few. A candidate replaces the best only when
 // it lowers E by more than rounding (1e-9 relative), so that an axis-aligned input keeps R = I.
 #include <Eigen/Core>
