@@ -175,6 +175,17 @@ TEST(PolycubeSolve, SolveFromTheCubeCoverIsVerifiedWithAndWithoutTheOptimalBound
     EXPECT_THROW(solve_polycube(prepared, both), InvalidArgumentError);
 }
 
+// A box whose top and bottom centres have 48 neighbours each, more than the angle barriers'
+// fixed-size elements take: the solve leaves them out of its terms, and the map is verified
+// (the angle sums measured at every vertex).
+TEST(PolycubeSolve, VerticesWithManyNeighboursAreSolved) {
+    const PreparedPolycube prepared = prepared_shape(testing::fan_box(12));
+    ASSERT_EQ(prepared.charts.size(), 6);
+    const PolycubeSolve solve = solve_polycube(prepared, {});
+    ASSERT_TRUE(solve.success) << solve.message;
+    EXPECT_EQ(solve.verification.vertex_angle_violations, 0);
+}
+
 // The plugin's projection untangles what flattening folds (PolycubePluginOptions): a valid
 // PolyCube (the cube cover of the shape) with interior vertices pushed through their neighbours
 // comes back inversion-free, every plane's coordinate where it was, and passes verify_polycube

@@ -154,5 +154,41 @@ TEST_F(PolycubeTerms, AngleBarriersAtRestAgreeAcrossForms) {
     EXPECT_EQ(a_elements + skipped.size(), p.stars.size());
 }
 
+// A boundary vertex with more neighbours than the vertex form takes (kMaxAngleRing) is left out
+// of both forms and named, not refused: the angle sums still measure it.
+TEST(PolycubeTermsLimits, StarsBeyondTheFixedSizesAreLeftOutAndNamed) {
+    const PreparedPolycube p =
+        prepare_polycube(testing::fan_box(12), "fan box", PolycubeLabelInput{});
+    std::vector<Index> large;
+    for (const BoundaryVertexStar& star : p.stars) {
+        if (star.ring.size() > std::size_t(kMaxAngleRing)) large.push_back(star.vertex);
+    }
+    ASSERT_EQ(large, (std::vector<Index>{0, 1}));  // the two centres
+    std::vector<Index> skipped;
+    std::size_t a_elements = 0, v_elements = 0;
+    for_each_solid_angle_term(
+        p, [&](auto, auto tets) { a_elements += tets.size(); },
+        [&](auto, auto vertices) {
+            for (const auto& ids : vertices) EXPECT_NE(ids[0], 0);
+            v_elements += vertices.size();
+        },
+        &skipped);
+    EXPECT_EQ(v_elements, p.stars.size() - 2);
+    EXPECT_EQ(a_elements + skipped.size(), p.stars.size());
+    EXPECT_NE(std::find(skipped.begin(), skipped.end(), 0), skipped.end());
+    EXPECT_NE(std::find(skipped.begin(), skipped.end(), 1), skipped.end());
+    const std::vector<double> sums = solid_angle_sums(p.stars, p.mesh.vertices);
+    for (std::size_t s = 0; s < p.stars.size(); ++s) {
+        if (p.stars[s].vertex <= 1) {
+            EXPECT_NEAR(sums[s], 2 * M_PI, 1e-9);  // flat, inside a face
+        }
+    }
+    skipped.clear();
+    std::size_t fans = 0;
+    for_each_dihedral_term(
+        p, [&](auto, auto tets) { fans += tets.size(); }, [](auto, auto) {}, &skipped);
+    EXPECT_EQ(fans + skipped.size(), p.fans.size());
+}
+
 }  // namespace
 }  // namespace sa

@@ -74,6 +74,46 @@ inline SimplicialMesh bent(SimplicialMesh mesh, double amplitude) {
     return mesh;
 }
 
+/// The box [-1, 1]^2 x [0, 1] as a fan of wedges about its vertical axis: each side of the top
+/// and bottom squares divided into `per_side` edges, every wedge (the two centres, two
+/// neighbouring points of the top square and the two below them) cut into three positively
+/// oriented tetrahedra, one of them on the axis. The two centres are boundary vertices with more
+/// than 4 per_side neighbours (vertex 0: the top centre; 1: the bottom one).
+inline SimplicialMesh fan_box(int per_side) {
+    const int n = 4 * per_side;
+    std::vector<Eigen::Vector3d> points = {{0, 0, 1}, {0, 0, 0}};
+    const std::array<Eigen::Vector2d, 5> corners = {
+        {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}}};
+    for (int z = 1; z >= 0; --z) {
+        for (int i = 0; i < n; ++i) {
+            const int side = i / per_side;
+            const double t = double(i % per_side) / per_side;
+            const Eigen::Vector2d q = (1 - t) * corners[side] + t * corners[side + 1];
+            points.emplace_back(q.x(), q.y(), double(z));
+        }
+    }
+    auto top = [&](int i) { return Index(2 + i % n); };
+    auto bottom = [&](int i) { return Index(2 + n + i % n); };
+    std::vector<std::array<Index, 4>> tets;
+    for (int i = 0; i < n; ++i) {
+        tets.push_back({0, 1, top(i), top(i + 1)});
+        tets.push_back({1, top(i), top(i + 1), bottom(i + 1)});
+        tets.push_back({1, top(i), bottom(i + 1), bottom(i)});
+    }
+    SimplicialMesh mesh;
+    mesh.vertices.resize(Index(points.size()), 3);
+    for (std::size_t v = 0; v < points.size(); ++v) mesh.vertices.row(Index(v)) = points[v];
+    mesh.simplices.resize(Index(tets.size()), 4);
+    for (std::size_t t = 0; t < tets.size(); ++t) {
+        auto tet = tets[t];
+        Eigen::Matrix3d e;
+        for (int k = 0; k < 3; ++k) e.col(k) = points[tet[k + 1]] - points[tet[0]];
+        if (e.determinant() < 0) std::swap(tet[1], tet[2]);
+        for (int k = 0; k < 4; ++k) mesh.simplices(Index(t), k) = tet[k];
+    }
+    return mesh;
+}
+
 /// The same tetrahedra with two vertices of every tetrahedron swapped: all negatively oriented.
 inline SimplicialMesh reversed(SimplicialMesh mesh) {
     mesh.simplices.col(1).swap(mesh.simplices.col(2));
