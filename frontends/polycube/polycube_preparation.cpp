@@ -1,6 +1,9 @@
 #include "frontends/polycube/polycube_preparation.h"
 
+#include <algorithm>
+#include <array>
 #include <cstdio>
+#include <map>
 #include <sstream>
 
 #include "geometry/io/mesh_file.h"
@@ -106,6 +109,31 @@ void log_labelling(const OrientedLabelling& l, const std::string& source, const 
     log_line(logger, line.str());
 }
 
+/// Throws InputError when the boundary is not a closed manifold surface: an edge with other than
+/// two boundary triangles. Charts, their planes and the angle sums need one; a mesh whose
+/// neighbouring tetrahedra split their common face differently (non-conforming: they share the
+/// face's vertices, not its triangles) has such edges all through its inside.
+void require_manifold_boundary(const TetBoundary& boundary, const std::string& source) {
+    std::map<std::array<Index, 2>, int> count;
+    for (Index b = 0; b < boundary.size(); ++b) {
+        for (int i = 0; i < 3; ++i) {
+            if (boundary.adjacent[b][i] >= 0) continue;
+            Index p = boundary.triangles(b, i), q = boundary.triangles(b, (i + 1) % 3);
+            ++count[{std::min(p, q), std::max(p, q)}];
+        }
+    }
+    if (count.empty()) return;
+    const auto& [edge, triangles] = *count.begin();
+    throw InputError(source + ": the boundary is not a closed manifold surface: " +
+                     std::to_string(count.size()) +
+                     " edges have other than two boundary triangles, e.g. (" +
+                     std::to_string(edge[0]) + ", " + std::to_string(edge[1]) + ") with " +
+                     std::to_string(triangles) +
+                     " (0-based vertices); a non-conforming mesh, whose neighbouring tetrahedra "
+                     "split a common face differently, looks like this. A PolyCube map needs a "
+                     "conforming tetrahedral mesh with a manifold boundary");
+}
+
 }  // namespace
 
 Eigen::MatrixXd PreparedPolycube::rest_positions() const {
@@ -131,6 +159,7 @@ PreparedPolycube prepare_polycube(const SimplicialMesh& mesh, const std::string&
     Stopwatch stage;
     const MeshTopology topology = mesh_topology(mesh, source);
     const TetBoundary boundary = tet_boundary(mesh, topology);
+    require_manifold_boundary(boundary, source);
     SimplicialMesh oriented = mesh;
     std::vector<int> labels;
     if (input.flags.empty() && input.labels.empty() && input.surface.empty()) {

@@ -11,7 +11,9 @@
 //   // p.mesh: the rest mesh of the map (the input after the splits); p.charts, p.fans, ...
 //
 // Errors (InputError, one line, naming the file and the tetrahedron, facet or chart): a mesh that
-// is not tetrahedral, degenerate rest tetrahedra, labels with a wrong count or out of range,
+// is not tetrahedral, degenerate rest tetrahedra, a boundary that is not a closed manifold
+// surface (a non-conforming mesh, whose neighbouring tetrahedra split a common face differently,
+// has one through its inside), labels with a wrong count or out of range,
 // interior facets labelled, boundary facets without a label, a surface that is not the mesh's
 // boundary, a chart that cannot be planar.
 

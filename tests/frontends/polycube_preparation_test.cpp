@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 
 #include "../geometry/polycube_fixtures.h"
 #include "frontends/polycube/polycube_output.h"
@@ -168,6 +169,49 @@ TEST_F(PolycubePreparation, BadInputIsRejectedInOneLine) {
     x.flags = path("x.flags");
     EXPECT_NE(message([&] { prepare_polycube(mesh, "cube", x); }).find("cannot be planar"),
               std::string::npos);
+}
+
+// Two cubes side by side whose tetrahedra split the face between them along different diagonals:
+// they share its four vertices, not its triangles, and the "boundary" runs through the inside.
+TEST_F(PolycubePreparation, ANonConformingMeshIsNamedAsSuch) {
+    const SimplicialMesh a = testing::voxel_tetrahedra({{0, 0, 0}}, 1);
+    SimplicialMesh b = a;  // shifted by +1 in x and mirrored in y: the other diagonal at x = 1
+    b.vertices.col(0).array() += 1.0;
+    b.vertices.col(1) = (1.0 - b.vertices.col(1).array()).matrix();
+    b.simplices.col(1).swap(b.simplices.col(2));  // positive again after the mirror
+    SimplicialMesh both;
+    std::map<std::array<double, 3>, Index> index;
+    std::vector<Eigen::Vector3d> points;
+    std::vector<std::array<Index, 4>> tets;
+    for (const SimplicialMesh* m : {&a, static_cast<const SimplicialMesh*>(&b)}) {
+        for (Index t = 0; t < m->num_simplices(); ++t) {
+            std::array<Index, 4> tet{};
+            for (int k = 0; k < 4; ++k) {
+                const Eigen::Vector3d p = m->vertices.row(m->simplices(t, k)).transpose();
+                const auto [it, inserted] = index.emplace(std::array{p.x(), p.y(), p.z()},
+                                                          Index(points.size()));
+                if (inserted) points.push_back(p);
+                tet[k] = it->second;
+            }
+            tets.push_back(tet);
+        }
+    }
+    both.vertices.resize(Index(points.size()), 3);
+    for (std::size_t v = 0; v < points.size(); ++v) both.vertices.row(Index(v)) = points[v];
+    both.simplices.resize(Index(tets.size()), 4);
+    for (std::size_t t = 0; t < tets.size(); ++t) {
+        for (int k = 0; k < 4; ++k) both.simplices(Index(t), k) = tets[t][k];
+    }
+    ASSERT_EQ(both.num_vertices(), 12);
+    const std::string text = message([&] { prepare_polycube(both, "two.ele", {}); });
+    EXPECT_NE(text.find("two.ele: the boundary is not a closed manifold surface"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("non-conforming"), std::string::npos);
+    EXPECT_EQ(text.find('\n'), std::string::npos);
+    // Conforming, the same two cubes are prepared.
+    EXPECT_NO_THROW(prepare_polycube(testing::voxel_tetrahedra({{0, 0, 0}, {1, 0, 0}}, 1), "two",
+                                     PolycubeLabelInput{}));
 }
 
 TEST_F(PolycubePreparation, OutputsReadBack) {
