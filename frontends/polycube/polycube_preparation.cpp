@@ -124,14 +124,14 @@ void require_manifold_boundary(const TetBoundary& boundary, const std::string& s
     }
     if (count.empty()) return;
     const auto& [edge, triangles] = *count.begin();
-    throw InputError(source + ": the boundary is not a closed manifold surface: " +
-                     std::to_string(count.size()) +
-                     " edges have other than two boundary triangles, e.g. (" +
-                     std::to_string(edge[0]) + ", " + std::to_string(edge[1]) + ") with " +
-                     std::to_string(triangles) +
-                     " (0-based vertices); a non-conforming mesh, whose neighbouring tetrahedra "
-                     "split a common face differently, looks like this. A PolyCube map needs a "
-                     "conforming tetrahedral mesh with a manifold boundary");
+    throw InputError(
+        source +
+        ": the boundary is not a closed manifold surface: " + std::to_string(count.size()) +
+        " edges have other than two boundary triangles, e.g. (" + std::to_string(edge[0]) + ", " +
+        std::to_string(edge[1]) + ") with " + std::to_string(triangles) +
+        " (0-based vertices); a non-conforming mesh, whose neighbouring tetrahedra "
+        "split a common face differently, looks like this. A PolyCube map needs a "
+        "conforming tetrahedral mesh with a manifold boundary");
 }
 
 }  // namespace

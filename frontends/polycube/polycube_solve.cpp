@@ -73,14 +73,14 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
                 return item.tets.size() > std::size_t(kMaxAngleFan);
             });
         };
-        log_line(options_.logger,
-                 "polycube: angle barriers on " +
-                     std::to_string(p_.fans.size() - a_form_left(p_.fans)) + " of " +
-                     std::to_string(p_.fans.size()) + " boundary edges and " +
-                     std::to_string(p_.stars.size() - a_form_left(p_.stars)) + " of " +
-                     std::to_string(p_.stars.size()) + " boundary vertices (the others have more "
-                     "than " + std::to_string(kMaxAngleFan) +
-                     " tetrahedra; their sums are checked at the hand-over and verified)");
+        log_line(
+            options_.logger,
+            "polycube: angle barriers on " + std::to_string(p_.fans.size() - a_form_left(p_.fans)) +
+                " of " + std::to_string(p_.fans.size()) + " boundary edges and " +
+                std::to_string(p_.stars.size() - a_form_left(p_.stars)) + " of " +
+                std::to_string(p_.stars.size()) + " boundary vertices (the others have more than " +
+                std::to_string(kMaxAngleFan) +
+                " tetrahedra; their sums are checked at the hand-over and verified)");
     }
 
     bool project(Eigen::MatrixXd& positions, const PluginStage<3>& stage) const override {

@@ -188,8 +188,8 @@ TEST_F(PolycubePreparation, ANonConformingMeshIsNamedAsSuch) {
             std::array<Index, 4> tet{};
             for (int k = 0; k < 4; ++k) {
                 const Eigen::Vector3d p = m->vertices.row(m->simplices(t, k)).transpose();
-                const auto [it, inserted] = index.emplace(std::array{p.x(), p.y(), p.z()},
-                                                          Index(points.size()));
+                const auto [it, inserted] =
+                    index.emplace(std::array{p.x(), p.y(), p.z()}, Index(points.size()));
                 if (inserted) points.push_back(p);
                 tet[k] = it->second;
             }

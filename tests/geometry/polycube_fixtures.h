@@ -82,8 +82,7 @@ inline SimplicialMesh bent(SimplicialMesh mesh, double amplitude) {
 inline SimplicialMesh fan_box(int per_side) {
     const int n = 4 * per_side;
     std::vector<Eigen::Vector3d> points = {{0, 0, 1}, {0, 0, 0}};
-    const std::array<Eigen::Vector2d, 5> corners = {
-        {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}}};
+    const std::array<Eigen::Vector2d, 5> corners = {{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}}};
     for (int z = 1; z >= 0; --z) {
         for (int i = 0; i < n; ++i) {
             const int side = i / per_side;
