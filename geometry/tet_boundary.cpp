@@ -1,6 +1,7 @@
 #include "geometry/tet_boundary.h"
 
 #include <algorithm>
+#include <numeric>
 
 #include "optim/errors.h"
 
@@ -101,6 +102,29 @@ Eigen::MatrixXd boundary_area_vectors(const TetBoundary& boundary,
         normals.row(b) = 0.5 * (p - a).cross(c - a).transpose();
     }
     return normals;
+}
+
+Index independent_loops(const TetBoundary& boundary) {
+    std::vector<Index> parent(boundary.size());
+    std::iota(parent.begin(), parent.end(), Index(0));
+    const auto root = [&](Index b) {
+        while (parent[b] != b) b = parent[b] = parent[parent[b]];
+        return b;
+    };
+    for (Index b = 0; b < boundary.size(); ++b) {
+        for (const Index n : boundary.adjacent[b]) {
+            if (n < 0) {
+                throw InvalidArgumentError(
+                    "independent_loops: the boundary is not a closed manifold surface");
+            }
+            parent[root(b)] = root(n);
+        }
+    }
+    Index components = 0, vertices = 0;
+    for (Index b = 0; b < boundary.size(); ++b) components += root(b) == b;
+    for (const unsigned char on : boundary.on_boundary) vertices += on;
+    const Index chi = vertices - Index(boundary.edges.size()) + boundary.size();
+    return components - chi / 2;
 }
 
 }  // namespace sa

@@ -61,4 +61,12 @@ TetBoundary tet_boundary(const SimplicialMesh& mesh, const MeshTopology& topolog
 Eigen::MatrixXd boundary_area_vectors(const TetBoundary& boundary,
                                       const Eigen::MatrixXd& positions);
 
+/// The number of independent loops in a solid that no surface inside it spans (its first Betti
+/// number: 1 for a solid torus or a cup with a handle, the genus for a handlebody, 0 for a ball,
+/// with or without cavities), from its boundary, which must be a closed manifold surface (every
+/// edge in two triangles): over a solid in space, b1 = (boundary components) - chi / 2, with chi =
+/// V - E + F the boundary's Euler characteristic. Throws InvalidArgumentError for a boundary that
+/// is not a closed manifold surface.
+Index independent_loops(const TetBoundary& boundary);
+
 }  // namespace sa

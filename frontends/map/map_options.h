@@ -23,9 +23,14 @@ SolveMode parse_solve_mode(const std::string& name);
 
 /// Which variables carry the translations (section 5.1, "Variants of simplex assembly").
 enum class Variant {
-    kReduced,  ///< r-SA: A_i for every simplex, T_p only on the Steiner-tree simplices (default)
-    kFull,     ///< f-SA: A_i and T_i for every simplex (Eqs. 2, 3)
-    kVertex,   ///< v-SA: per-simplex copies of the vertex positions
+    /// r-SA: A_i for every simplex, T_p only on the Steiner-tree simplices (default). Its
+    /// assembly makes the A_i agree across shared facets, which glues the mesh only where every
+    /// loop is contractible: around a handle (or a hole without handles on it) the A_i may
+    /// integrate to a map that does not close, and Eq. 6 spreads the gap (README.md, "Where we
+    /// depart from the paper"). f-SA closes every loop.
+    kReduced,
+    kFull,    ///< f-SA: A_i and T_i for every simplex (Eqs. 2, 3)
+    kVertex,  ///< v-SA: per-simplex copies of the vertex positions
 };
 std::string to_string(Variant variant);
 

@@ -15,6 +15,7 @@
 #include "geometry/cube_cover.h"
 #include "geometry/polycube_planes.h"
 #include "geometry/rest_frames.h"
+#include "geometry/tet_boundary.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
 
@@ -324,6 +325,18 @@ PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSol
         std::max(options.max_time - out.cube_cover_seconds - out.untangle_seconds, 1e-3);
     o.num_threads = options.threads;
     o.mode = SolveMode::kFull;
+    // r-SA makes the linear parts agree across every shared facet (Eq. 7), which glues a mesh
+    // only where every loop is contractible: the paper's argument (its appendix) glues simplex
+    // by simplex and never closes a loop. Around a handle the agreeing A_i may integrate to a map
+    // that does not close; Eq. 6 spreads the gap, the recovered charts are not planar and their
+    // projection onto the planes folds tetrahedra (cup: E~ = 8.6e-22 with charts up to 0.0145 of
+    // the diagonal from their planes, and no hand-over). f-SA assembles the vertices themselves,
+    // which closes every loop (BENCHMARKS.md, session 39).
+    const Index loops = independent_loops(prepared.boundary);
+    o.variant = loops > 0 ? Variant::kFull : Variant::kReduced;
+    log_line(logger, "polycube: " + std::to_string(loops) +
+                         " independent loops (handles) in the solid: " +
+                         (loops > 0 ? "f-SA, which closes them" : "r-SA"));
     o.untangle_fallback = false;
     o.handover_ratio = options.handover_ratio;
     SimplexAssemblyObserver observer;

@@ -249,5 +249,18 @@ TEST(PolycubeSolve, TheProjectionUntanglesOnThePlanes) {
               0);
 }
 
+// r-SA's assembly does not close a loop around a handle (polycube_solve.cpp): a solid with one
+// is solved with f-SA, one without keeps r-SA, and both are verified PolyCubes.
+TEST(PolycubeSolve, ASolidWithAHandleIsAssembledWithTheVertices) {
+    for (const bool handle : {false, true}) {
+        const PreparedPolycube prepared = prepared_shape(testing::bent(
+            testing::voxel_tetrahedra(handle ? testing::ring() : testing::l_shape(), 2), 0.15));
+        const PolycubeSolve solve = solve_polycube(prepared, {});
+        ASSERT_TRUE(solve.success) << solve.message;
+        EXPECT_LE(solve.verification.max_planarity, 1e-9);
+        EXPECT_EQ(solve.options.variant, handle ? Variant::kFull : Variant::kReduced);
+    }
+}
+
 }  // namespace
 }  // namespace sa

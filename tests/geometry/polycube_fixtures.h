@@ -62,6 +62,17 @@ inline std::vector<Cell> l_shape() {
     return {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
 }
 
+/// A square ring of 3 x 3 unit cubes without the middle one, `layers` cubes high: a solid with
+/// one handle.
+inline std::vector<Cell> ring(int layers = 1) {
+    std::vector<Cell> cells;
+    for (int z = 0; z < layers; ++z)
+        for (int x = 0; x < 3; ++x)
+            for (int y = 0; y < 3; ++y)
+                if (x != 1 || y != 1) cells.push_back({x, y, z});
+    return cells;
+}
+
 /// A smooth deformation that keeps every face of a voxel shape closest to its own axis: each
 /// coordinate bent by a small sine of the others.
 inline SimplicialMesh bent(SimplicialMesh mesh, double amplitude) {
