@@ -25,9 +25,9 @@ SolveMode parse_solve_mode(const std::string& name);
 enum class Variant {
     /// r-SA: A_i for every simplex, T_p only on the Steiner-tree simplices (default). Its
     /// assembly makes the A_i agree across shared facets, which glues the mesh only where every
-    /// loop is contractible: around a handle (or a hole without handles on it) the A_i may
-    /// integrate to a map that does not close, and Eq. 6 spreads the gap (README.md, "Where we
-    /// depart from the paper"). f-SA closes every loop.
+    /// loop is contractible: around a handle of a solid the A_i may integrate to a map that does
+    /// not close, and Eq. 6 spreads the gap (README.md, "Where we depart from the paper"). f-SA
+    /// closes every loop.
     kReduced,
     kFull,    ///< f-SA: A_i and T_i for every simplex (Eqs. 2, 3)
     kVertex,  ///< v-SA: per-simplex copies of the vertex positions
