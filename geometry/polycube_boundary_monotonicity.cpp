@@ -52,13 +52,16 @@ std::vector<NonMonotoneBoundary> non_monotone_boundaries(const TetBoundary& boun
     struct Edge {
         double along, length;
         Index from, to;
+        std::array<Index, 2> triangles;  // chart_a's first
     };
     std::map<ChartPair, std::vector<Edge>> pairs;
     for_each_chart_boundary_edge(boundary, labels, [&](Index b, int i, Index n) {
         const Eigen::Vector3d h = side_vector(boundary, positions, b, i);
+        const bool b_first = charts.chart_of[b] < charts.chart_of[n];
         pairs[chart_pair(charts.chart_of[b], charts.chart_of[n])].push_back(
             {along_polycube_edge(h, labels[b], labels[n]), h.norm(), boundary.triangles(b, i),
-             boundary.triangles(b, (i + 1) % 3)});
+             boundary.triangles(b, (i + 1) % 3),
+             b_first ? std::array<Index, 2>{b, n} : std::array<Index, 2>{n, b}});
     });
     // Two charts may meet along several separate boundaries (around a handle, say), each with
     // its own direction: the edges of a pair are split into connected chains (union-find on
@@ -89,6 +92,7 @@ std::vector<NonMonotoneBoundary> non_monotone_boundaries(const TetBoundary& boun
                 if (sign * e->along < 0.0) turning.backward_travel += -sign * e->along;
                 if (sign * e->along < -strong_cosine * e->length) {
                     if (turning.strongly_backward++ == 0) turning.vertex = e->from;
+                    turning.backward_triangles.push_back(e->triangles);
                 }
             }
             if (turning.strongly_backward > 0) found.push_back(turning);

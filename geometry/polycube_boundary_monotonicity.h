@@ -13,6 +13,7 @@
 // vector); an edge is backward when h_e . d has the other sign, strongly backward when h_e . d <
 // -strong_cosine |h_e| (a zigzag across d is not).
 
+#include <array>
 #include <vector>
 
 #include "geometry/polycube_labeling.h"
@@ -28,6 +29,8 @@ struct NonMonotoneBoundary {
     double length = 0.0;             ///< rest length of the boundary (rest units)
     double backward_travel = 0.0;    ///< sum over backward edges of |h_e . d| (rest units)
     Index vertex = -1;               ///< a vertex of a strongly backward edge (0-based)
+    /// Per strongly backward edge: its two boundary triangles, chart_a's first.
+    std::vector<std::array<Index, 2>> backward_triangles;
 };
 
 /// The non-monotone boundaries of `labels` (one per boundary triangle, 0..5) at rest `positions`

@@ -53,6 +53,10 @@ CLI::App* add_polycube_command(CLI::App& app, PolycubeArguments& a) {
     polycube->add_flag("--keep-orientation", a.keep_orientation,
                        "computed labels in the input's own axes (by default the mesh is "
                        "labelled turned so that its boundary faces the axes best)");
+    polycube->add_flag("--keep-turning-boundaries", a.keep_turning_boundaries,
+                       "computed labels whose chart boundaries turn back along their PolyCube "
+                       "edge are kept as they are (by default patches are relabelled to remove "
+                       "the reversals)");
     polycube->add_option("--bound", a.bound, "bound K on the conformal distortion, > 1 or inf")
         ->capture_default_str();
     polycube->add_flag("--optimal-bound", a.optimal_bound,
@@ -93,7 +97,13 @@ PolycubePlan check_polycube_arguments(const PolycubeArguments& a) {
         throw InvalidArgumentError("--keep-orientation: only for computed labels (--labels " +
                                    a.labels + " are in the input's own axes already)");
     }
+    if (a.keep_turning_boundaries && !a.labels.empty()) {
+        throw InvalidArgumentError(
+            "--keep-turning-boundaries: only for computed labels (--labels " + a.labels +
+            " are used as given)");
+    }
     plan.labels.orient = !a.keep_orientation;
+    plan.labels.repair = !a.keep_turning_boundaries;
     plan.bound = parse_bound(a.bound);
     if (a.optimal_bound && std::isfinite(plan.bound)) {
         throw InvalidArgumentError("--bound " + a.bound +

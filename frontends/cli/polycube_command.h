@@ -30,6 +30,7 @@ struct PolycubeArguments {
     int threads = 0;
     bool optimal_bound = false, force = false, quiet = false, no_png = false;
     bool keep_orientation = false;
+    bool keep_turning_boundaries = false;
 };
 
 /// Adds the `polycube` subcommand to `app`, filling `arguments` when parsed.

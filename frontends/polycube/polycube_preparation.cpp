@@ -63,11 +63,13 @@ struct OrientedLabelling {
     LabelCleanupReport cleanup;
     std::string error;  ///< why they cannot be used (empty: they can)
     std::vector<NonMonotoneBoundary> turning;
+    std::optional<LabelRepairReport> repair;
 };
 
 OrientedLabelling labelling_in(const SimplicialMesh& mesh, const std::string& source,
                                const TetBoundary& boundary, const PolycubeOrientation& orientation,
-                               const LabelCleanupOptions& options) {
+                               const PolycubeLabelInput& input) {
+    const LabelCleanupOptions& options = input.cleanup;
     OrientedLabelling l;
     l.orientation = orientation;
     l.oriented = mesh;
@@ -87,14 +89,34 @@ OrientedLabelling labelling_in(const SimplicialMesh& mesh, const std::string& so
     }
     l.turning = non_monotone_boundaries(boundary, l.oriented.vertices, l.labels,
                                         polycube_charts(boundary, l.oriented.vertices, l.labels));
+    if (!l.turning.empty() && input.repair) {
+        LabelRepairOptions repair;
+        repair.cleanup = options;
+        l.repair = repair_turning_boundaries(boundary, l.oriented.vertices, l.labels, repair);
+        l.turning =
+            non_monotone_boundaries(boundary, l.oriented.vertices, l.labels,
+                                    polycube_charts(boundary, l.oriented.vertices, l.labels));
+    }
     return l;
 }
 
+/// Strongly backward edges of the closest-axis labels, before any repair.
+Index backward_before_repair(const OrientedLabelling& l) {
+    if (l.repair) return l.repair->backward_before;
+    Index backward = 0;
+    for (const NonMonotoneBoundary& t : l.turning) backward += t.strongly_backward;
+    return backward;
+}
+
 /// Whether labelling `b` is to be preferred to `a`: usable where `a` is not, else fewer chart
-/// boundaries that turn back, else a better l1 alignment (polycube_orientation.h).
+/// boundaries that turn back, else fewer strongly backward edges before the repair (labels that
+/// needed less relabelling follow the shape better: on cup the cube cover of the other folds
+/// several times more, BENCHMARKS.md), else a better l1 alignment (polycube_orientation.h).
 bool preferred(const OrientedLabelling& b, const OrientedLabelling& a) {
     if (a.error.empty() != b.error.empty()) return b.error.empty();
     if (b.turning.size() != a.turning.size()) return b.turning.size() < a.turning.size();
+    const Index backward_a = backward_before_repair(a), backward_b = backward_before_repair(b);
+    if (backward_a != backward_b) return backward_b < backward_a;
     return b.orientation.energy < a.orientation.energy * (1.0 - 1e-9);
 }
 
@@ -107,6 +129,16 @@ void log_labelling(const OrientedLabelling& l, const std::string& source, const 
          << cleanup.merged_few_neighbours << " with few neighbours, " << cleanup.merged_opposite
          << " beside their opposite; " << cleanup.teeth << " teeth)";
     log_line(logger, line.str());
+    if (l.repair) {
+        const LabelRepairReport& r = *l.repair;
+        log_line(logger,
+                 source + ": repair of boundaries turning back: " +
+                     std::to_string(r.turning_before) + " -> " + std::to_string(r.turning_after) +
+                     " boundaries, " + std::to_string(r.backward_before) + " -> " +
+                     std::to_string(r.backward_after) + " strongly backward edges; " +
+                     std::to_string(r.moves) + " moves, " + std::to_string(r.triangles_changed) +
+                     " triangles relabelled (" + std::to_string(r.trials) + " labellings tried)");
+    }
 }
 
 /// Throws InputError when the boundary is not a closed manifold surface: an edge with other than
@@ -167,19 +199,24 @@ PreparedPolycube prepare_polycube(const SimplicialMesh& mesh, const std::string&
         // axes best, the better of the two labellings (preferred()).
         p.label_source = "computed";
         OrientedLabelling chosen =
-            labelling_in(mesh, source, boundary, PolycubeOrientation{}, input.cleanup);
+            labelling_in(mesh, source, boundary, PolycubeOrientation{}, input);
         chosen.orientation.energy = chosen.orientation.energy_identity = l1_alignment(
             boundary_area_vectors(boundary, mesh.vertices), Eigen::Matrix3d::Identity());
         if (input.orient) {
             const PolycubeOrientation best = polycube_orientation(boundary, mesh.vertices);
             if (best.angle_degrees > 0.0) {
-                OrientedLabelling turned =
-                    labelling_in(mesh, source, boundary, best, input.cleanup);
+                OrientedLabelling turned = labelling_in(mesh, source, boundary, best, input);
                 auto usable = [](const OrientedLabelling& l) {
-                    return l.error.empty() ? std::to_string(l.turning.size()) + " turning back"
-                                           : std::string("unusable");
+                    if (!l.error.empty()) return std::string("unusable");
+                    std::string s = std::to_string(l.turning.size()) + " turning back";
+                    if (l.repair) {
+                        s += " (" + std::to_string(l.repair->turning_before) + " with " +
+                             std::to_string(l.repair->backward_before) +
+                             " strongly backward edges before the repair)";
+                    }
+                    return s;
                 };
-                char line[320];
+                char line[480];
                 std::snprintf(line, sizeof line,
                               "%s: orientation: turned by %.2f degrees the boundary faces the "
                               "axes best (l1 alignment %.4f, %.4f as given; 1 = every triangle "
@@ -194,6 +231,7 @@ PreparedPolycube prepare_polycube(const SimplicialMesh& mesh, const std::string&
         if (!chosen.error.empty()) throw InputError(chosen.error);
         p.orientation = chosen.orientation;
         p.cleanup = chosen.cleanup;
+        p.repair = chosen.repair;
         p.non_monotone = chosen.turning;
         labels = std::move(chosen.labels);
         oriented = std::move(chosen.oriented);

@@ -24,6 +24,7 @@
 #include "frontends/polycube/polycube_verification.h"
 #include "geometry/polycube_boundary_monotonicity.h"
 #include "geometry/polycube_label_cleanup.h"
+#include "geometry/polycube_label_repair.h"
 #include "geometry/polycube_orientation.h"
 #include "geometry/polycube_splits.h"
 #include "geometry/tet_boundary_fans.h"
@@ -40,6 +41,8 @@ struct PolycubeLabelInput {
     /// Computed labels: label (and map) the input turned by polycube_orientation(), which the
     /// map does not otherwise see; false: in the input's own axes.
     bool orient = true;
+    /// Computed labels: repair chart boundaries that turn back (polycube_label_repair.h).
+    bool repair = true;
 };
 
 struct PreparedPolycube {
@@ -67,6 +70,7 @@ struct PreparedPolycube {
     /// convention throughout, otherwise even = +axis along the outward normal.
     FlagSign output_sign = FlagSign::kOutward;
     std::optional<LabelCleanupReport> cleanup;  ///< computed labels
+    std::optional<LabelRepairReport> repair;    ///< computed labels that turned back
     /// Chart boundaries of the labels (on `input`) that turn back along their PolyCube edge.
     std::vector<NonMonotoneBoundary> non_monotone;
     PolycubeSplitReport splits;

@@ -9,6 +9,9 @@ namespace sa {
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LabelCleanupReport, charts_before, charts_after, merged_small,
                                    merged_few_neighbours, merged_opposite, teeth, triangles_changed,
                                    rounds, clean)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LabelRepairReport, turning_before, turning_after,
+                                   backward_before, backward_after, moves, triangles_changed,
+                                   trials)
 
 namespace {
 
@@ -45,6 +48,7 @@ nlohmann::json polycube_preparation_json(const PreparedPolycube& p) {
                                 {"negative_tets", p.convention->negative_tets}};
     }
     if (p.cleanup) labels["cleanup"] = *p.cleanup;
+    if (p.repair) labels["repair"] = *p.repair;
     if (p.orientation) {
         const Eigen::Matrix3d& r = p.orientation->rotation;
         labels["orientation"] = {{"rotation",

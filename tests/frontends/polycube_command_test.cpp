@@ -71,6 +71,12 @@ TEST_F(PolycubeCommand, ArgumentsAreChecked) {
         check({"--mesh", path("L.mesh"), "--out", path("out.mesh"), "--keep-orientation"}, &plan),
         "");
     EXPECT_FALSE(plan.labels.orient);
+    EXPECT_TRUE(plan.labels.repair);
+    EXPECT_EQ(
+        check({"--mesh", path("L.mesh"), "--out", path("out.mesh"), "--keep-turning-boundaries"},
+              &plan),
+        "");
+    EXPECT_FALSE(plan.labels.repair);
 
     std::ofstream(path("L.flags")) << "0\n";
     std::ofstream(path("l.txt")) << "0\n";
@@ -102,6 +108,9 @@ TEST_F(PolycubeCommand, ArgumentsAreChecked) {
     fails({"--mesh", path("L.mesh"), "--labels", path("L.flags"), "--keep-orientation", "--out",
            path("o.mesh")},
           "only for computed labels");
+    fails({"--mesh", path("L.mesh"), "--labels", path("L.flags"), "--keep-turning-boundaries",
+           "--out", path("o.mesh")},
+          "--keep-turning-boundaries: only for computed labels");
     fails({"--mesh", path("L.mesh"), "--out", path("o.mesh"), "--png", path("p.jpg")}, ".png");
     fails({"--mesh", path("L.mesh"), "--out", path("o.mesh"), "--max-time", "-1"}, "--max-time");
     fails({"--mesh", path("L.mesh"), "--out", path("o.mesh"), "--report", path("o.flags")},

@@ -1,5 +1,6 @@
 // The PolyCube pieces on ../shared/data/polycube (SA_DATA_DIR): label reading and transfer, and
-// the squashed-element counts of issue 21. Skips when the folder is absent.
+// the squashed-element counts of issue 21, the repair of cup's turning boundaries. Skips when the
+// folder is absent.
 
 #include <gtest/gtest.h>
 
@@ -7,7 +8,9 @@
 
 #include "geometry/io/mesh_file.h"
 #include "geometry/io/polycube_labels_io.h"
+#include "geometry/polycube_boundary_monotonicity.h"
 #include "geometry/polycube_label_cleanup.h"
+#include "geometry/polycube_label_repair.h"
 #include "geometry/polycube_label_transfer.h"
 #include "geometry/polycube_splits.h"
 
@@ -80,6 +83,21 @@ TEST_F(PolycubeData, ComputedLabelsOfTheRobustPolycubeMeshesAreCleanAndSplit) {
             EXPECT_GT(split.before.tets, 90);
         }
     }
+}
+
+TEST_F(PolycubeData, CupsComputedLabelsNoLongerTurnBackAfterTheRepair) {
+    const SimplicialMesh mesh = read_mesh_file(path("robustPolycube/cup.mesh")).mesh;
+    const TetBoundary boundary = tet_boundary(mesh, mesh_topology(mesh, "cup"));
+    std::vector<int> labels = closest_axis_labels(boundary, mesh.vertices);
+    ASSERT_TRUE(clean_polycube_labels(boundary, mesh.vertices, labels).clean);
+    const LabelRepairReport report = repair_turning_boundaries(boundary, mesh.vertices, labels);
+    EXPECT_EQ(report.turning_before, 3);  // BENCHMARKS.md, session 35
+    EXPECT_EQ(report.turning_after, 0);
+    EXPECT_LE(report.triangles_changed, 50);
+    EXPECT_NO_THROW(validate_polycube_labels(mesh, boundary, labels, "cup"));
+    EXPECT_TRUE(non_monotone_boundaries(boundary, mesh.vertices, labels,
+                                        polycube_charts(boundary, mesh.vertices, labels))
+                    .empty());
 }
 
 }  // namespace
