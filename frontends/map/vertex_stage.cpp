@@ -1,6 +1,7 @@
 #include "frontends/map/detail/vertex_stage.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "energies/boundary_angle_energy.h"
@@ -217,12 +218,17 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
         return r;
     };
     Range d = distortion_range(start);
-    // Within the range a factorization handles: one run. So too when a simplex is beyond the
-    // barrier's exponent cap at s or the start is not valid (run_once skips them and says why):
-    // a simplex with a free vertex stays beyond the cap only where the handles force it
-    // (untangle_prepared() stops below it otherwise; tlc/armadillo-598), and no exponent makes
-    // the barrier lower such a simplex.
-    if (!(c.s * d.spread() > kExponentRange) || !(c.s * d.largest <= kBarrierExponentCap))
+    // Within the range a factorization handles: one run. So too when the start is not valid, or
+    // when a simplex is beyond the barrier's exponent cap at s and some vertex is fixed (run_once
+    // skips them and says why): there the handles can force it (tlc/armadillo-598, where
+    // untangle_prepared() stops below the cap otherwise), and no exponent makes the barrier lower
+    // such a simplex. With no vertex fixed nothing forces it (an assembly that recovered a mesh
+    // with one very distorted tetrahedron, as PolyCube's on robustPolycube/cup): the rounds at a
+    // lower s, below the cap, lower it.
+    const bool any_fixed = std::find(fixed.begin(), fixed.end(), 1) != fixed.end();
+    const bool beyond_cap = !(c.s * d.largest <= kBarrierExponentCap);
+    if (!std::isfinite(d.largest) || !(c.s * d.spread() > kExponentRange) ||
+        (beyond_cap && any_fixed))
         return run_once<D>(mesh, frames, energies, start, fixed, options, logger, terms);
 
     // The energy asked for, on the whole mesh: what the best iterate is judged by.

@@ -9,6 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "frontends/map/detail/prepared_problem.h"
 #include "frontends/map/detail/untangle_fallback.h"
 #include "frontends/map/map_solve.h"
@@ -100,6 +103,43 @@ TEST(VertexStageContinuation, UntanglingFallbackEndsLowDistorted) {
     EXPECT_EQ(q.inverted + q.degenerate, 0);
     for (Index h : problem.handles)
         EXPECT_LE((result.positions.row(h) - g.initial.row(h)).norm(), 1e-12);
+}
+
+// Nothing fixed (as PolyCube's vertex stage, whose planes remove the rigid motion): a start with
+// one simplex beyond the barrier's exponent cap was skipped ("so distorted that the barrier
+// cannot rank the others"); no handle forces that simplex, so the rounds at a lower exponent
+// lower it. The start: two tetrahedra on a common facet, one apex moved to 1e-6 above it.
+TEST(VertexStageContinuation, LowersASimplexBeyondTheCapWhenNothingIsFixed) {
+    MappingProblem problem;
+    problem.mesh.vertices.resize(5, 3);
+    problem.mesh.vertices << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0.3, 0.3, -1;
+    problem.mesh.simplices.resize(2, 4);
+    problem.mesh.simplices << 0, 1, 2, 3, 0, 2, 1, 4;
+    problem.initial = problem.mesh.vertices;
+    problem.initial.row(3) << 0.2, 0.2, 1e-6;
+
+    const SimplexAssemblyOptions options;
+    StageTimes times;
+    const auto prepared = prepare_problem<3>(problem, options, times);
+    const Eigen::MatrixXd start = prepared->start;
+    const double before = largest_distortion(*prepared, start);
+    ASSERT_GT(options.s * before, kBarrierExponentCap);
+    ASSERT_TRUE(std::isfinite(before));
+
+    const std::vector<unsigned char> fixed(problem.mesh.num_vertices(), 0);
+    VertexStageTerms<3> terms;
+    terms.exponent = exponent_continuation<3>(*prepared);
+    const VertexStage v_stage =
+        run_vertex_stage<3>(prepared->mesh, prepared->frames, prepared->assembly.energies, start,
+                            fixed, options, Logger{}, terms);
+    EXPECT_TRUE(v_stage.ran) << v_stage.note;
+    EXPECT_NE(v_stage.note.find("exponent continuation"), std::string::npos) << v_stage.note;
+    const double after = largest_distortion(*prepared, v_stage.positions);
+    EXPECT_LT(after, 10.0) << v_stage.note;
+    const MapQuality q =
+        map_quality<3>(linear_parts<3>(prepared->mesh, prepared->frames, v_stage.positions),
+                       prepared->frames.volume);
+    EXPECT_EQ(q.inverted + q.degenerate, 0);
 }
 
 }  // namespace
