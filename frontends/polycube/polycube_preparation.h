@@ -1,7 +1,8 @@
 #pragma once
 // The input side of `sa polycube` (issue 21), everything before the solve: a tetrahedral mesh and
 // its boundary labelling (from a .flags file, from per-triangle labels of a boundary surface, or
-// computed by closest axis and cleaned, in the input's axes or turned by
+// computed by closest axis, cleaned and, where chart boundaries turn back, repaired
+// (polycube_label_repair.h), in the input's axes or turned by
 // polycube_orientation(), whichever labelling is better), checked, and the mesh split where
 // planarity would squash it (geometry/polycube_splits.h).
 //
