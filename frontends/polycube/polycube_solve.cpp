@@ -15,6 +15,7 @@
 #include "geometry/cube_cover.h"
 #include "geometry/polycube_planes.h"
 #include "geometry/rest_frames.h"
+#include "geometry/submesh.h"
 #include "geometry/tet_boundary.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
@@ -105,13 +106,15 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
     /// When `positions` (on the planes) has an inverted or degenerate tetrahedron: untangles
     /// them in vertex variables (untangle.h), each plane one variable as in the vertex stage, the
     /// outermost ones fixed (and the vertices `fixed` flags, when given), and keeps the result
-    /// when it is
-    /// inversion-free with every angle sum below its limit; otherwise leaves `positions`. Rest
-    /// `mesh` and `positions` in the same units (any). Each try costs up to untangle_iterations
-    /// steps, and far from planarity (cup: thousands folded after the first assembly
-    /// iterations) it fails every time: after a failure with n bad tetrahedra, the next try
-    /// waits until fewer than n / 2 are. Returns the number of tetrahedra that were inverted or
-    /// degenerate, and sets `*untangled` when it replaced the positions.
+    /// when it is inversion-free with every angle sum below its limit; otherwise leaves
+    /// `positions`. The bad tetrahedra are few and local (the plane projection folds them along
+    /// the charts' borders), so the vertices within kLocalRings rings of them are untangled
+    /// first, the rest (and so every plane they touch) fixed; the whole mesh only when that
+    /// fails. Rest `mesh` and `positions` in the same units (any). Each try costs up to
+    /// untangle_iterations steps, and far from planarity (cup: thousands folded after the first
+    /// assembly iterations) it fails every time: after a failure with n bad tetrahedra, the next
+    /// try waits until fewer than n / 2 are. Returns the number of tetrahedra that were inverted
+    /// or degenerate, and sets `*untangled` when it replaced the positions.
     Index untangle_on_planes(Eigen::MatrixXd& positions, const SimplicialMesh& mesh,
                              const RestFrames<3>& frames, const std::vector<unsigned char>* fixed,
                              bool* untangled = nullptr) const {
@@ -119,9 +122,45 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
         const MapQuality quality =
             map_quality<3>(linear_parts<3>(mesh, frames, positions), frames.volume);
         const Index bad = quality.inverted + quality.degenerate;
+        if (bad == 0 || bad >= retry_below_ || options_.untangle_iterations <= 0) return bad;
+        std::vector<unsigned char> held(mesh.num_vertices(), 0);
+        if (fixed != nullptr) held = *fixed;
+        // The local tries need the prepared mesh's adjacency: the driver's mesh is that mesh.
+        if (mesh.num_simplices() == p_.mesh.num_simplices() &&
+            mesh.num_vertices() == p_.mesh.num_vertices()) {
+            std::vector<Index> seeds;
+            for (Index s = 0; s < mesh.num_simplices(); ++s) {
+                if (quality.per_simplex[s].inverted || quality.per_simplex[s].degenerate)
+                    seeds.push_back(s);
+            }
+            std::vector<unsigned char> outside(mesh.num_vertices(), 1);
+            for (const Index s : grow_rings(mesh, p_.topology, seeds, kLocalRings)) {
+                for (int k = 0; k < 4; ++k) outside[mesh.simplices(s, k)] = 0;
+            }
+            for (std::size_t v = 0; v < outside.size(); ++v) outside[v] |= held[v];
+            const std::string note =
+                untangle_try(positions, mesh, frames, outside, bad,
+                             "in " + std::to_string(kLocalRings) + " rings around them");
+            if (note.empty()) {
+                if (untangled != nullptr) *untangled = true;
+                return bad;
+            }
+        }
+        const std::string note =
+            untangle_try(positions, mesh, frames, held, bad, "on the whole mesh");
+        if (!note.empty()) retry_below_ = bad / 2;
+        if (untangled != nullptr) *untangled = note.empty();
+        return bad;
+    }
+
+    /// One untangle_on_planes() try with the vertices `fixed` flags held; replaces `positions`
+    /// and returns "" when the result is inversion-free over the whole mesh with every angle sum
+    /// below its limit, why not otherwise. `where` names the region in the log line.
+    std::string untangle_try(Eigen::MatrixXd& positions, const SimplicialMesh& mesh,
+                             const RestFrames<3>& frames, const std::vector<unsigned char>& fixed,
+                             Index bad, const std::string& where) const {
         const double left = options_.max_time - clock_.seconds();
-        if (bad == 0 || bad >= retry_below_ || options_.untangle_iterations <= 0 || !(left > 0.0))
-            return bad;
+        if (!(left > 0.0)) return "out of time";
         UntangleOptions u;
         // To the untangling energy's convergence, not the first valid iterate: its near-flat
         // tetrahedra would put the conformal barrier beyond what the vertex stage can start from.
@@ -140,19 +179,23 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
         }
         const PluginStage<3> stage;
         u.accept = [&](const Eigen::MatrixXd& x) { return std::isfinite(energy(x, stage)); };
-        std::vector<unsigned char> none(mesh.num_vertices(), 0);
-        const UntangleResult r =
-            untangle<3>(mesh, frames, positions, fixed != nullptr ? *fixed : none, u);
-        const bool kept = r.untangled && std::isfinite(energy(r.positions, stage));
+        const UntangleResult r = untangle<3>(mesh, frames, positions, fixed, u);
+        // untangle() checks the tetrahedra with a free vertex only.
+        std::string note = r.untangled ? "" : r.note;
+        if (note.empty()) {
+            const MapQuality q =
+                map_quality<3>(linear_parts<3>(mesh, frames, r.positions), frames.volume);
+            if (q.inverted + q.degenerate > 0) note = "bad tetrahedra with no free vertex";
+        }
+        if (note.empty() && !std::isfinite(energy(r.positions, stage)))
+            note = "an angle sum at its limit";
         log_line(options_.logger,
                  "polycube: " + std::to_string(bad) +
-                     " tetrahedra inverted or degenerate on the planes; untangled on them in " +
-                     std::to_string(r.iterations) +
-                     " steps: " + (kept ? "kept" : "not kept (" + r.note + ")"));
-        if (kept) positions = r.positions;
-        if (!kept) retry_below_ = bad / 2;
-        if (untangled != nullptr) *untangled = kept;
-        return bad;
+                     " tetrahedra inverted or degenerate on the planes; untangled " + where +
+                     " in " + std::to_string(r.iterations) +
+                     " steps: " + (note.empty() ? "kept" : "not kept (" + note + ")"));
+        if (note.empty()) positions = r.positions;
+        return note;
     }
 
     std::vector<Index> shared_coordinates(const Eigen::MatrixXd& positions,
@@ -252,6 +295,8 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
 
     PolycubePluginOptions options_;
     Stopwatch clock_;  ///< since the plugin was made: options_.max_time counts from there
+    /// Rings of tetrahedra around the bad ones that untangle_on_planes() frees first.
+    static constexpr int kLocalRings = 4;
     /// untangle_on_planes() tries only below this many bad tetrahedra (the driver calls it from
     /// one thread: at the start, then once per assembly iteration).
     mutable Index retry_below_ = std::numeric_limits<Index>::max();

@@ -249,6 +249,44 @@ TEST(PolycubeSolve, TheProjectionUntanglesOnThePlanes) {
               0);
 }
 
+// A fold is untangled where it is: a bar of eight cubes folded at one end comes back a verified
+// PolyCube with the vertices of its other half where they were (the whole mesh would move them:
+// the untangling runs to convergence).
+TEST(PolycubeSolve, TheProjectionUntanglesAFoldLocally) {
+    std::vector<testing::Cell> bar;
+    for (int x = 0; x < 8; ++x) bar.push_back({x, 0, 0});
+    const PreparedPolycube prepared = prepared_shape(testing::voxel_tetrahedra(bar, 2));
+    const CubeCover cover = cube_cover_map(prepared.mesh, prepared.boundary, prepared.charts);
+    ASSERT_TRUE(verify_polycube(prepared.layout(), cover.positions, prepared.input_volume).passed);
+    const RestFrames<3> frames = rest_frames<3>(prepared.mesh);
+    Eigen::MatrixXd folded = cover.positions;
+    Index inner = -1;
+    for (Index v = 0; v < prepared.mesh.num_vertices() && inner < 0; ++v) {
+        if (!prepared.boundary.on_boundary[v] && prepared.mesh.vertices(v, 0) == 0.5) inner = v;
+    }
+    ASSERT_GE(inner, 0);
+    folded.row(inner) += Eigen::RowVector3d(0.7, 0.1, 0.0);
+    ASSERT_GT(
+        map_quality<3>(linear_parts<3>(prepared.mesh, frames, folded), frames.volume).inverted, 0);
+    PluginStage<3> stage;
+    stage.kind = PluginStage<3>::Kind::kVertex;
+    stage.mesh = &prepared.mesh;
+    stage.frames = &frames;
+    Eigen::MatrixXd projected = folded;
+    ASSERT_TRUE(polycube_plugin(prepared)->project(projected, stage));
+    const PolycubeVerification v =
+        verify_polycube(prepared.layout(), projected, prepared.input_volume);
+    EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
+    Index moved = 0;
+    for (Index u = 0; u < prepared.mesh.num_vertices(); ++u) {
+        // Up to the rounding of the planes' means, which project() takes first.
+        const double shift = (projected.row(u) - folded.row(u)).norm();
+        if (shift > 1e-9) ++moved;
+        if (prepared.mesh.vertices(u, 0) >= 4.0) EXPECT_LE(shift, 1e-12) << "vertex " << u;
+    }
+    EXPECT_GT(moved, 0);
+}
+
 // r-SA's assembly does not close a loop around a handle (polycube_solve.cpp): a solid with one
 // is solved with f-SA, one without keeps r-SA, and both are verified PolyCubes.
 TEST(PolycubeSolve, ASolidWithAHandleIsAssembledWithTheVertices) {
