@@ -55,29 +55,9 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
     Stopwatch total;
     NewtonSummary summary;
     PhaseTimes& times = summary.times;
-    Stopwatch watch;
-
-    if (!assembler_ || !assembler_->matches(problem)) {
-        assembler_.reset();
-        linear_solver_.reset();
-        assembler_ = std::make_unique<HessianAssembler>(problem);
-        times.setup += watch.lap();
-    }
-    HessianAssembler& assembler = *assembler_;
-    if (!linear_solver_ || requested_solver_ != opt.linear_solver) {
-        requested_solver_ = opt.linear_solver;
-        linear_solver_ = std::make_unique<LinearSolver>(opt.linear_solver);
-        if (assembler.num_free() > 0) linear_solver_->analyze(assembler.hessian());
-        times.analyze += watch.lap();
-    }
 
     const Index n = problem.num_variables();
-    const Index nf = assembler.num_free();
     summary.num_variables = n;
-    summary.num_free_variables = nf;
-    summary.hessian_nonzeros = assembler.hessian().nonZeros();
-    summary.linear_solver = linear_solver_->active_type();
-
     Eigen::VectorXd x = problem.variables();
     std::vector<double> term_values;
     double energy = problem.value(x, &term_values);
@@ -87,7 +67,7 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
         summary.termination = type;
         summary.message = std::move(message);
         summary.final_energy = energy;
-        summary.linear_solver = linear_solver_->active_type();
+        if (linear_solver_) summary.linear_solver = linear_solver_->active_type();
         times.total = total.seconds();
         return summary;
     };
@@ -123,6 +103,27 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
                             "the energy is NaN at the initial variables");
     }
     if (run_callbacks()) return summary;
+
+    // The Hessian's pattern and its symbolic factorization only now: a callback that takes the
+    // start (a hand-over at iteration 0) needs neither.
+    Stopwatch watch;
+    if (!assembler_ || !assembler_->matches(problem)) {
+        assembler_.reset();
+        linear_solver_.reset();
+        assembler_ = std::make_unique<HessianAssembler>(problem);
+        times.setup += watch.lap();
+    }
+    HessianAssembler& assembler = *assembler_;
+    if (!linear_solver_ || requested_solver_ != opt.linear_solver) {
+        requested_solver_ = opt.linear_solver;
+        linear_solver_ = std::make_unique<LinearSolver>(opt.linear_solver);
+        if (assembler.num_free() > 0) linear_solver_->analyze(assembler.hessian());
+        times.analyze += watch.lap();
+    }
+    const Index nf = assembler.num_free();
+    summary.num_free_variables = nf;
+    summary.hessian_nonzeros = assembler.hessian().nonZeros();
+    summary.linear_solver = linear_solver_->active_type();
     if (nf == 0) return finish(TerminationType::kConverged, "no free variables");
 
     const LineSearchOptions& ls = opt.line_search;

@@ -11,7 +11,8 @@
 //
 // The solver keeps its Hessian pattern and symbolic factorization between solve() calls while
 // the problem's structure is unchanged, so a caller that solves a sequence of problems of the
-// same structure (or resumes one) pays the setup once.
+// same structure (or resumes one) pays the setup once. Both are made after the callbacks of
+// iteration 0, so a solve that a callback ends there (the start is good enough) pays nothing.
 
 #include <memory>
 

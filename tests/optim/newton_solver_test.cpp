@@ -202,6 +202,30 @@ TEST(NewtonSolver, CallbacksSeeEveryIterationAndCanStopIt) {
     EXPECT_EQ(summary.num_steps(), 3);
 }
 
+// A callback that takes the start ends the solve before the Hessian's pattern and its symbolic
+// factorization are made; a later solve with the same solver makes them and converges.
+TEST(NewtonSolver, AStartTakenAtIterationZeroIsNotAnalyzed) {
+    Problem problem = make_convex_quadratic(10, Spring{});
+    bool take_start = true;
+    NewtonOptions options;
+    options.callbacks.push_back([&](const IterationContext&) {
+        return take_start ? CallbackResult::kStopSuccess : CallbackResult::kContinue;
+    });
+    NewtonSolver solver(options);
+    const NewtonSummary taken = solver.solve(problem);
+    EXPECT_EQ(taken.termination, TerminationType::kUserSuccess);
+    EXPECT_EQ(taken.num_steps(), 0);
+    EXPECT_EQ(taken.num_free_variables, 0);
+    EXPECT_EQ(taken.hessian_nonzeros, 0);
+    EXPECT_EQ(taken.times.analyze, 0.0);
+    take_start = false;
+    const NewtonSummary solved = solver.solve(problem);
+    ASSERT_TRUE(solved.success()) << solved.message;
+    EXPECT_EQ(solved.num_free_variables, 10);
+    EXPECT_GT(solved.hessian_nonzeros, 0);
+    EXPECT_GT(solved.num_steps(), 0);
+}
+
 TEST(NewtonSolver, CallbacksMayChangeWeightsBetweenIterations) {
     Problem problem = make_convex_quadratic(10, Spring{});
     NewtonOptions options;
