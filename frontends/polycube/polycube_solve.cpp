@@ -138,12 +138,15 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
                 for (int k = 0; k < 4; ++k) outside[mesh.simplices(s, k)] = 0;
             }
             for (std::size_t v = 0; v < outside.size(); ++v) outside[v] |= held[v];
-            const std::string note =
-                untangle_try(positions, mesh, frames, outside, bad,
-                             "in " + std::to_string(kLocalRings) + " rings around them");
-            if (note.empty()) {
-                if (untangled != nullptr) *untangled = true;
-                return bad;
+            // A region that frees every vertex the whole mesh frees is the whole-mesh try.
+            if (outside != held) {
+                const std::string note =
+                    untangle_try(positions, mesh, frames, outside, bad,
+                                 "in " + std::to_string(kLocalRings) + " rings around them");
+                if (note.empty()) {
+                    if (untangled != nullptr) *untangled = true;
+                    return bad;
+                }
             }
         }
         const std::string note =

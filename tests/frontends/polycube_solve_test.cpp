@@ -186,6 +186,15 @@ TEST(PolycubeSolve, VerticesWithManyNeighboursAreSolved) {
     EXPECT_EQ(solve.verification.vertex_angle_violations, 0);
 }
 
+/// The stage in which the driver calls the plugin's projection with the mesh at hand.
+PluginStage<3> vertex_stage(const PreparedPolycube& prepared, const RestFrames<3>& frames) {
+    PluginStage<3> stage;
+    stage.kind = PluginStage<3>::Kind::kVertex;
+    stage.mesh = &prepared.mesh;
+    stage.frames = &frames;
+    return stage;
+}
+
 // The plugin's projection untangles what flattening folds (PolycubePluginOptions): a valid
 // PolyCube (the cube cover of the shape) with interior vertices pushed through their neighbours
 // comes back inversion-free, every plane's coordinate where it was, and passes verify_polycube
@@ -205,10 +214,7 @@ TEST(PolycubeSolve, TheProjectionUntanglesOnThePlanes) {
     }
     ASSERT_GT(
         map_quality<3>(linear_parts<3>(prepared.mesh, frames, folded), frames.volume).inverted, 0);
-    PluginStage<3> stage;
-    stage.kind = PluginStage<3>::Kind::kVertex;
-    stage.mesh = &prepared.mesh;
-    stage.frames = &frames;
+    const PluginStage<3> stage = vertex_stage(prepared, frames);
     Eigen::MatrixXd projected = folded;
     ASSERT_TRUE(polycube_plugin(prepared)->project(projected, stage));
     const PolycubeVerification v =
@@ -268,10 +274,7 @@ TEST(PolycubeSolve, TheProjectionUntanglesAFoldLocally) {
     folded.row(inner) += Eigen::RowVector3d(0.7, 0.1, 0.0);
     ASSERT_GT(
         map_quality<3>(linear_parts<3>(prepared.mesh, frames, folded), frames.volume).inverted, 0);
-    PluginStage<3> stage;
-    stage.kind = PluginStage<3>::Kind::kVertex;
-    stage.mesh = &prepared.mesh;
-    stage.frames = &frames;
+    const PluginStage<3> stage = vertex_stage(prepared, frames);
     Eigen::MatrixXd projected = folded;
     ASSERT_TRUE(polycube_plugin(prepared)->project(projected, stage));
     const PolycubeVerification v =
