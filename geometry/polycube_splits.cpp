@@ -599,7 +599,10 @@ PolycubeSplitReport split_squashed_elements(SimplicialMesh& mesh, std::vector<in
                 any = split.split_flattened(t, chart_label) || any;
             }
             // None of them has a split without flat children: they stay in report.after.
-            if (!any) break;
+            if (!any) {
+                report.flat_tets = bad.flattened_tets;
+                break;
+            }
         }
         report.edge_splits += split.edge_splits();
         report.face_splits += split.face_splits();

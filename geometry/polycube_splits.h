@@ -49,9 +49,11 @@ SquashedElements count_squashed_elements(const SimplicialMesh& mesh,
 
 struct PolycubeSplitReport {
     SquashedElements before;
-    /// All zero on success; flattened tetrahedra that no split repairs stay here (the solve
-    /// then cannot verify).
+    /// All zero on success; flattened tetrahedra that no split repairs stay here.
     SquashedElements after;
+    /// Those tetrahedra (indices in the split mesh): flat in every map whose charts are planar,
+    /// so the labels admit no valid PolyCube map of this mesh.
+    std::vector<Index> flat_tets;
     Index edge_splits = 0;  ///< interior and boundary edges split
     Index face_splits = 0;  ///< boundary triangles and interior facets split
     Index vertices_added = 0;

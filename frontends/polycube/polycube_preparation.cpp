@@ -166,6 +166,66 @@ void require_manifold_boundary(const TetBoundary& boundary, const std::string& s
         "conforming tetrahedral mesh with a manifold boundary");
 }
 
+/// Throws InputError when the splits left tetrahedra flat on the planes (PolycubeSplitReport::
+/// flat_tets): no map with planar charts can be valid, so the solve would run to its time limit
+/// and fail. Names the first by its vertices and each vertex's charts (the usual cause: two
+/// charts of one axis that meet at a vertex only, which puts them in one plane).
+void require_no_flat_tets(const PreparedPolycube& p, Index input_vertices,
+                          const std::string& source) {
+    if (p.splits.flat_tets.empty()) return;
+    std::vector<std::vector<int>> charts(p.mesh.num_vertices());  // per vertex, sorted
+    for (Index b = 0; b < p.boundary.size(); ++b) {
+        for (int i = 0; i < 3; ++i)
+            charts[p.boundary.triangles(b, i)].push_back(p.charts.chart_of[b]);
+    }
+    for (auto& of : charts) {
+        std::sort(of.begin(), of.end());
+        of.erase(std::unique(of.begin(), of.end()), of.end());
+    }
+    auto chart_name = [&](int c) {
+        return label_name(p.charts.label[c]) + " chart " + std::to_string(c);
+    };
+    const Index t = p.splits.flat_tets.front();
+    std::string where;
+    std::vector<int> seen;  // the tetrahedron's charts
+    for (int k = 0; k < 4; ++k) {
+        const Index v = p.mesh.simplices(t, k);
+        where += (k == 0 ? "" : "; ") + std::string("vertex ") + std::to_string(v) +
+                 (v >= input_vertices ? " (added by a split)" : "");
+        if (charts[v].empty()) where += " inside";
+        for (std::size_t i = 0; i < charts[v].size(); ++i) {
+            where += (i == 0 ? " on " : ", ") + chart_name(charts[v][i]);
+            seen.push_back(charts[v][i]);
+        }
+    }
+    // Where two of its charts of one axis meet.
+    std::sort(seen.begin(), seen.end());
+    seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+    for (std::size_t i = 0; i < seen.size(); ++i) {
+        for (std::size_t j = i + 1; j < seen.size(); ++j) {
+            if (label_axis(p.charts.label[seen[i]]) != label_axis(p.charts.label[seen[j]]))
+                continue;
+            for (Index v = 0; v < p.mesh.num_vertices(); ++v) {
+                const auto& of = charts[v];
+                if (std::binary_search(of.begin(), of.end(), seen[i]) &&
+                    std::binary_search(of.begin(), of.end(), seen[j])) {
+                    where += "; " + chart_name(seen[i]) + " and " + chart_name(seen[j]) +
+                             " meet at vertex " + std::to_string(v);
+                    break;
+                }
+            }
+        }
+    }
+    const bool computed = p.label_source == "computed";
+    throw InputError(
+        (computed ? source : p.label_source) + ": the " + (computed ? "computed " : "") +
+        "labels admit no valid PolyCube map: " + std::to_string(p.splits.flat_tets.size()) +
+        " tetrahedra are flat wherever the planes go (charts of one axis that share a vertex lie "
+        "in one plane) and no split repairs them, e.g. the one with " +
+        where + " (0-based vertices)" +
+        (computed ? "; give labels of your own with --labels" : ""));
+}
+
 }  // namespace
 
 Eigen::MatrixXd PreparedPolycube::rest_positions() const {
@@ -283,6 +343,7 @@ PreparedPolycube prepare_polycube(const SimplicialMesh& mesh, const std::string&
                               ? "; " + std::to_string(p.splits.after.flattened_tets) +
                                     " tetrahedra flat on the planes remain (no split repairs them)"
                               : std::string()));
+    require_no_flat_tets(p, mesh.num_vertices(), source);
     return p;
 }
 

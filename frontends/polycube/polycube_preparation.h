@@ -16,7 +16,8 @@
 // surface (a non-conforming mesh, whose neighbouring tetrahedra split a common face differently,
 // has one through its inside), labels with a wrong count or out of range,
 // interior facets labelled, boundary facets without a label, a surface that is not the mesh's
-// boundary, a chart that cannot be planar.
+// boundary, a chart that cannot be planar, labels that leave tetrahedra flat for every position
+// of the planes after the splits (no valid PolyCube map exists: refused before any solve).
 
 #include <optional>
 #include <string>
