@@ -262,5 +262,41 @@ TEST(PolycubeSplits, ATetrahedronOnTwoParallelPolycubeEdgesIsSplitAcross) {
     EXPECT_LT(std::min(to_a0c1, to_a1c0), 1e-12);
 }
 
+// Two tetrahedra a b c p and a c b q on their common facet a b c, every other facet on the
+// boundary: a b p (+Z) and c b q (-Z) are two charts that meet at vertex b only, and so are
+// b c p (+X) and a q b (+X); a p c and a c q are one +Y chart. Charts of one axis that share a
+// vertex lie in one plane, so all five vertices are on the Z plane and both tetrahedra are flat
+// in every PolyCube of these labels. No split can lift them (every edge is on the boundary, and
+// a facet's new vertex is on that plane in the planes' model): the report names them.
+TEST(PolycubeSplits, TetrahedraFlatOnEveryPolycubeAreReported) {
+    SimplicialMesh mesh;
+    mesh.vertices.resize(5, 3);
+    mesh.vertices << 0, 0, 0,  // a
+        1, 0, 0,               // b
+        0, 1, 0,               // c
+        0.3, 0.3, 1,           // p
+        0.3, 0.3, -1;          // q
+    mesh.simplices.resize(2, 4);
+    mesh.simplices << 0, 1, 2, 3,  // a b c p
+        0, 2, 1, 4;                // a c b q
+    ASSERT_GT(volume(mesh, 0), 0.0);
+    ASSERT_GT(volume(mesh, 1), 0.0);
+    // Facets in kTetFacetCorners' order: {1,2,3}, {0,3,2}, {0,1,3}, {0,2,1} (the last: a b c).
+    std::vector<int> flags = {0, 2, 4, -1,   // b c p +X, a p c +Y, a b p +Z
+                              5, 0, 2, -1};  // c b q -Z, a q b +X, a c q +Y
+    const SquashedElements squashed = count_squashed_elements(mesh, flags);
+    EXPECT_EQ(squashed.tets, 0);
+    EXPECT_EQ(squashed.interior_edges, 0);
+    EXPECT_EQ(squashed.boundary_edges, 0);
+    EXPECT_EQ(squashed.boundary_triangles, 0);
+    EXPECT_EQ(squashed.flattened_tets, 2);
+    SimplicialMesh split = mesh;
+    const PolycubeSplitReport report = split_squashed_elements(split, flags, "bipyramid");
+    EXPECT_EQ(report.after.flattened_tets, 2);
+    EXPECT_EQ(report.flat_tets, (std::vector<Index>{0, 1}));
+    EXPECT_EQ(report.vertices_added, 0);
+    EXPECT_EQ(split.simplices, mesh.simplices);
+}
+
 }  // namespace
 }  // namespace sa
