@@ -5,6 +5,7 @@
 #include <limits>
 #include <numeric>
 
+#include "geometry/detail/union_find.h"
 #include "geometry/polycube_planes.h"
 #include "optim/errors.h"
 #include "optim/linear_solver.h"
@@ -28,11 +29,6 @@ Eigen::Matrix<double, 3, 4> barycentric_gradients(const SimplicialMesh& mesh, In
     g.rightCols<3>() = inverse.transpose();
     g.col(0) = -g.rightCols<3>().rowwise().sum();
     return g;
-}
-
-int find(std::vector<int>& parent, int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
 }
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -166,16 +162,12 @@ CubeCover cube_cover_map(const SimplicialMesh& mesh, const TetBoundary& boundary
     for (Index t = 0; t < nt; ++t) gradients[t] = barycentric_gradients(mesh, t, &volume[t]);
 
     // Connected components of vertices over tetrahedra, for the translation of each.
-    std::vector<int> component(nv);
-    std::iota(component.begin(), component.end(), 0);
+    UnionFind components(nv);
     for (Index t = 0; t < nt; ++t) {
-        for (int k = 1; k < 4; ++k) {
-            const int a = find(component, mesh.simplices(t, 0)),
-                      b = find(component, mesh.simplices(t, k));
-            if (a != b) component[std::max(a, b)] = std::min(a, b);
-        }
+        for (int k = 1; k < 4; ++k) components.join(mesh.simplices(t, 0), mesh.simplices(t, k));
     }
-    for (Index v = 0; v < nv; ++v) component[v] = find(component, v);
+    std::vector<int> component(nv);
+    for (Index v = 0; v < nv; ++v) component[v] = components.find(v);
 
     const PolycubePlanes planes = polycube_planes(boundary, charts, nv);
     const std::vector<PolycubeEdgeOrder> orders =

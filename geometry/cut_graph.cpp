@@ -3,9 +3,9 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <complex>
-#include <numeric>
 #include <queue>
 
+#include "geometry/detail/union_find.h"
 #include "optim/errors.h"
 
 namespace sa {
@@ -21,16 +21,6 @@ double angle_to(const SimplicialMesh& mesh, Index f, const Eigen::Vector3d& e,
                                   .normalized();
     return std::atan2(n.dot(e.cross(d)), e.dot(d));
 }
-
-struct UnionFind {
-    std::vector<Index> parent;
-    explicit UnionFind(Index n) : parent(n) { std::iota(parent.begin(), parent.end(), Index(0)); }
-    Index find(Index a) {
-        while (parent[a] != a) a = parent[a] = parent[parent[a]];
-        return a;
-    }
-    void join(Index a, Index b) { parent[find(a)] = find(b); }
-};
 
 }  // namespace
 

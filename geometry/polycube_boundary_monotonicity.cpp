@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numeric>
 #include <utility>
+
+#include "geometry/detail/union_find.h"
 
 namespace sa {
 
@@ -66,17 +67,12 @@ std::vector<NonMonotoneBoundary> non_monotone_boundaries(const TetBoundary& boun
     // Two charts may meet along several separate boundaries (around a handle, say), each with
     // its own direction: the edges of a pair are split into connected chains (union-find on
     // their vertices).
-    std::vector<Index> parent(positions.rows());
-    std::iota(parent.begin(), parent.end(), Index(0));
-    const auto root = [&](Index v) {
-        while (parent[v] != v) v = parent[v] = parent[parent[v]];
-        return v;
-    };
+    UnionFind chain_of(Index(positions.rows()));
     std::vector<NonMonotoneBoundary> found;
     for (const auto& [key, edges] : pairs) {
-        for (const Edge& e : edges) parent[root(e.from)] = root(e.to);
+        for (const Edge& e : edges) chain_of.join(e.from, e.to);
         std::map<Index, std::vector<const Edge*>> chains;
-        for (const Edge& e : edges) chains[root(e.from)].push_back(&e);
+        for (const Edge& e : edges) chains[chain_of.find(e.from)].push_back(&e);
         for (const auto& [chain_root, chain] : chains) {
             double net = 0.0;
             for (const Edge* e : chain) net += e->along;
@@ -97,7 +93,7 @@ std::vector<NonMonotoneBoundary> non_monotone_boundaries(const TetBoundary& boun
             }
             if (turning.strongly_backward > 0) found.push_back(turning);
         }
-        for (const Edge& e : edges) parent[e.from] = e.from, parent[e.to] = e.to;
+        for (const Edge& e : edges) chain_of.reset(e.from), chain_of.reset(e.to);
     }
     std::stable_sort(found.begin(), found.end(), [](const auto& x, const auto& y) {
         return x.backward_travel > y.backward_travel;

@@ -2,20 +2,11 @@
 
 #include <algorithm>
 #include <map>
-#include <numeric>
 
+#include "geometry/detail/union_find.h"
 #include "optim/errors.h"
 
 namespace sa {
-
-namespace {
-
-int find(std::vector<int>& parent, int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-}
-
-}  // namespace
 
 PolycubePlanes polycube_planes(const TetBoundary& boundary, const PolycubeCharts& charts,
                                Index num_vertices) {
@@ -23,8 +14,7 @@ PolycubePlanes polycube_planes(const TetBoundary& boundary, const PolycubeCharts
         throw InvalidArgumentError("polycube_planes: the charts are not those of this boundary");
     }
     // Union of the charts of one axis that share a vertex.
-    std::vector<int> parent(charts.size());
-    std::iota(parent.begin(), parent.end(), 0);
+    UnionFind same_plane(charts.size());
     std::vector<std::array<int, 3>> chart_at(num_vertices, {-1, -1, -1});
     for (Index b = 0; b < boundary.size(); ++b) {
         const int c = charts.chart_of[b];
@@ -34,15 +24,14 @@ PolycubePlanes polycube_planes(const TetBoundary& boundary, const PolycubeCharts
             if (mine < 0) {
                 mine = c;
             } else {
-                const int x = find(parent, mine), y = find(parent, c);
-                if (x != y) parent[std::max(x, y)] = std::min(x, y);
+                same_plane.join(mine, c);
             }
         }
     }
     PolycubePlanes planes;
     planes.plane_of_chart.assign(charts.size(), -1);
     for (int c = 0; c < charts.size(); ++c) {
-        const int root = find(parent, c);
+        const int root = same_plane.find(c);
         if (planes.plane_of_chart[root] < 0) {
             planes.plane_of_chart[root] = planes.size();
             planes.axis.push_back(label_axis(charts.label[c]));

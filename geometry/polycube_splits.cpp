@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <map>
-#include <numeric>
 
+#include "geometry/detail/union_find.h"
 #include "optim/errors.h"
 
 namespace sa {
@@ -64,23 +64,18 @@ std::vector<Charts> vertex_charts(const SimplicialMesh& mesh, const std::vector<
 /// Returns each vertex's plane per axis.
 std::vector<VertexPlanes> vertex_planes(const std::vector<Charts>& of,
                                         const std::vector<int>& chart_label) {
-    std::vector<int> parent(chart_label.size());
-    std::iota(parent.begin(), parent.end(), 0);
-    auto find = [&](int c) {
-        while (parent[c] != c) c = parent[c] = parent[parent[c]];
-        return c;
-    };
+    UnionFind same_plane(Index(chart_label.size()));
     for (const Charts& charts : of) {
         for (std::size_t i = 0; i < charts.size(); ++i) {
             for (std::size_t j = i + 1; j < charts.size(); ++j) {
                 if (label_axis(chart_label[charts[i]]) == label_axis(chart_label[charts[j]]))
-                    parent[find(charts[i])] = find(charts[j]);
+                    same_plane.join(charts[i], charts[j]);
             }
         }
     }
     std::vector<VertexPlanes> planes(of.size(), kFree);
     for (std::size_t v = 0; v < of.size(); ++v) {
-        for (const int c : of[v]) planes[v][label_axis(chart_label[c])] = find(c);
+        for (const int c : of[v]) planes[v][label_axis(chart_label[c])] = same_plane.find(c);
     }
     return planes;
 }

@@ -4,6 +4,8 @@
 #include <numeric>
 #include <queue>
 
+#include "geometry/detail/union_find.h"
+
 namespace sa {
 
 namespace {
@@ -24,21 +26,6 @@ struct Adjacency {
     }
 };
 
-struct DisjointSets {
-    std::vector<Index> parent;
-    explicit DisjointSets(Index n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-    Index find(Index v) {
-        while (parent[v] != v) v = parent[v] = parent[parent[v]];
-        return v;
-    }
-    bool unite(Index a, Index b) {
-        a = find(a), b = find(b);
-        if (a == b) return false;
-        parent[std::max(a, b)] = std::min(a, b);
-        return true;
-    }
-};
-
 GraphEdge sorted(Index a, Index b) {
     return {std::min(a, b), std::max(a, b)};
 }
@@ -53,9 +40,9 @@ std::vector<GraphEdge> approximate_steiner_tree(Index n, const std::vector<Graph
 
     // 1. Groups: components of the subgraph of terminal-terminal edges, each spanned by a tree.
     std::vector<GraphEdge> chosen;
-    DisjointSets groups(n);
+    UnionFind groups(n);
     for (const GraphEdge& e : edges) {
-        if (terminal[e[0]] && terminal[e[1]] && groups.unite(e[0], e[1]))
+        if (terminal[e[0]] && terminal[e[1]] && groups.join(e[0], e[1]))
             chosen.push_back(sorted(e[0], e[1]));
     }
 
@@ -97,10 +84,10 @@ std::vector<GraphEdge> approximate_steiner_tree(Index n, const std::vector<Graph
     }
     std::stable_sort(candidates.begin(), candidates.end(),
                      [](const Candidate& a, const Candidate& b) { return a.length < b.length; });
-    DisjointSets joined(n);
+    UnionFind joined(n);
     for (const Candidate& c : candidates) {
         const Index u = edges[c.edge][0], v = edges[c.edge][1];
-        if (!joined.unite(group[u], group[v])) continue;
+        if (!joined.join(group[u], group[v])) continue;
         chosen.push_back(sorted(u, v));
         for (Index w : {u, v}) {
             for (Index x = w; parent[x] >= 0; x = parent[x]) chosen.push_back(sorted(x, parent[x]));
@@ -110,10 +97,10 @@ std::vector<GraphEdge> approximate_steiner_tree(Index n, const std::vector<Graph
     chosen.erase(std::unique(chosen.begin(), chosen.end()), chosen.end());
 
     // 4. A spanning forest of the union, then prune leaves that are not terminals.
-    DisjointSets forest(n);
+    UnionFind forest(n);
     std::vector<GraphEdge> tree;
     for (const GraphEdge& e : chosen) {
-        if (forest.unite(e[0], e[1])) tree.push_back(e);
+        if (forest.join(e[0], e[1])) tree.push_back(e);
     }
     const Adjacency tree_graph(n, tree);
     std::vector<Index> degree(n, 0);

@@ -1,8 +1,8 @@
 #include "geometry/tet_boundary.h"
 
 #include <algorithm>
-#include <numeric>
 
+#include "geometry/detail/union_find.h"
 #include "optim/errors.h"
 
 namespace sa {
@@ -105,23 +105,18 @@ Eigen::MatrixXd boundary_area_vectors(const TetBoundary& boundary,
 }
 
 Index independent_loops(const TetBoundary& boundary) {
-    std::vector<Index> parent(boundary.size());
-    std::iota(parent.begin(), parent.end(), Index(0));
-    const auto root = [&](Index b) {
-        while (parent[b] != b) b = parent[b] = parent[parent[b]];
-        return b;
-    };
+    UnionFind sets(boundary.size());
     for (Index b = 0; b < boundary.size(); ++b) {
         for (const Index n : boundary.adjacent[b]) {
             if (n < 0) {
                 throw InvalidArgumentError(
                     "independent_loops: the boundary is not a closed manifold surface");
             }
-            parent[root(b)] = root(n);
+            sets.join(b, n);
         }
     }
     Index components = 0, vertices = 0;
-    for (Index b = 0; b < boundary.size(); ++b) components += root(b) == b;
+    for (Index b = 0; b < boundary.size(); ++b) components += sets.find(b) == b;
     for (const unsigned char on : boundary.on_boundary) vertices += on;
     const Index chi = vertices - Index(boundary.edges.size()) + boundary.size();
     return components - chi / 2;
