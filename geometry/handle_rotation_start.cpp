@@ -4,8 +4,8 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
-#include <numeric>
 
+#include "geometry/detail/union_find.h"
 #include "geometry/rotation_fit.h"
 
 namespace sa {
@@ -39,16 +39,6 @@ Mat<D> rotation_of(const Rep<D>& r) {
         return Eigen::Quaterniond(u[0], u[1], u[2], u[3]).toRotationMatrix();
     }
 }
-
-struct UnionFind {
-    std::vector<Index> root;
-    explicit UnionFind(Index n) : root(n) { std::iota(root.begin(), root.end(), Index(0)); }
-    Index find(Index v) {
-        while (root[v] != v) v = root[v] = root[root[v]];
-        return v;
-    }
-    void join(Index a, Index b) { root[find(a)] = find(b); }
-};
 
 /// A group of handles: its best rigid rotation, and whether its rest positions determine it.
 template <int D>

@@ -1,8 +1,8 @@
 #include "geometry/tet_boundary_fans.h"
 
 #include <algorithm>
-#include <numeric>
 
+#include "geometry/detail/union_find.h"
 #include "optim/errors.h"
 
 namespace sa {
@@ -18,12 +18,7 @@ Eigen::Vector3d at(const Eigen::MatrixXd& positions, Index v) {
 std::vector<std::vector<Index>> sheets(const SimplicialMesh& mesh, const MeshTopology& topology,
                                        const std::vector<Index>& tets,
                                        const std::vector<Index>& shared) {
-    std::vector<int> group(tets.size());
-    std::iota(group.begin(), group.end(), 0);
-    auto find = [&](int x) {
-        while (group[x] != x) x = group[x] = group[group[x]];
-        return x;
-    };
+    UnionFind group(Index(tets.size()));
     for (std::size_t i = 0; i < tets.size(); ++i) {
         for (int k = 0; k < 4; ++k) {
             // The facet opposite k contains every shared vertex unless k is one of them.
@@ -32,13 +27,13 @@ std::vector<std::vector<Index>> sheets(const SimplicialMesh& mesh, const MeshTop
             const Index n = topology.neighbour_of(tets[i], k);
             if (n < 0) continue;
             const auto j = std::find(tets.begin(), tets.end(), n) - tets.begin();
-            if (j < Index(tets.size())) group[find(int(i))] = find(int(j));
+            if (j < Index(tets.size())) group.join(Index(i), Index(j));
         }
     }
     std::vector<std::vector<Index>> out;
     std::vector<int> slot(tets.size(), -1);
     for (std::size_t i = 0; i < tets.size(); ++i) {
-        const int r = find(int(i));
+        const Index r = group.find(Index(i));
         if (slot[r] < 0) {
             slot[r] = int(out.size());
             out.emplace_back();

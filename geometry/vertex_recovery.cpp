@@ -3,6 +3,7 @@
 #include <Eigen/Sparse>
 #include <string>
 
+#include "geometry/detail/union_find.h"
 #include "optim/errors.h"
 
 namespace sa {
@@ -23,21 +24,16 @@ VertexRecovery<D>::VertexRecovery(const SimplicialMesh& mesh, const RestFrames<D
     if (num_free_ == 0) return;
     // Each connected part of the mesh needs a fixed vertex, or the system is singular: checked on
     // the graph itself, since a factorization of a singular system need not fail in rounding.
-    std::vector<Index> root(nv);
-    for (Index v = 0; v < nv; ++v) root[v] = v;
-    auto find = [&root](Index v) {
-        while (root[v] != v) v = root[v] = root[root[v]];
-        return v;
-    };
+    UnionFind parts(nv);
     for (Index s = 0; s < mesh.num_simplices(); ++s) {
-        for (int k = 1; k <= D; ++k) root[find(mesh.simplices(s, k))] = find(mesh.simplices(s, 0));
+        for (int k = 1; k <= D; ++k) parts.join(mesh.simplices(s, k), mesh.simplices(s, 0));
     }
     std::vector<unsigned char> anchored(nv, 0);
     for (Index v = 0; v < nv; ++v) {
-        if (used[v] && fixed_[v]) anchored[find(v)] = 1;
+        if (used[v] && fixed_[v]) anchored[parts.find(v)] = 1;
     }
     for (Index v = 0; v < nv; ++v) {
-        if (used[v] && !anchored[find(v)]) {
+        if (used[v] && !anchored[parts.find(v)]) {
             throw InvalidArgumentError(
                 "vertex recovery: the system is singular: a connected part of the mesh (vertex " +
                 std::to_string(v) + ") has no fixed vertex");

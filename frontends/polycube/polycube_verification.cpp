@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numeric>
 #include <sstream>
 
 #include "frontends/polycube/boundary_angle_sums.h"
+#include "geometry/detail/union_find.h"
 #include "optim/errors.h"
 
 namespace sa {
@@ -60,22 +60,18 @@ std::vector<EdgeRun> polycube_edge_runs(const PolycubeLayout& layout,
         }
     }
     std::vector<EdgeRun> runs;
+    UnionFind run_of(Index(positions.rows()));
     for (const auto& [pair, edges] : by_pair) {
         // Runs: components over shared vertices.
-        std::map<Index, Index> parent;
-        auto find = [&](Index v) {
-            if (!parent.count(v)) parent[v] = v;
-            while (parent[v] != v) v = parent[v] = parent[parent[v]];
-            return v;
-        };
-        for (const auto& e : edges) parent[find(e[0])] = find(e[1]);
+        for (const auto& e : edges) run_of.join(e[0], e[1]);
         std::map<Index, std::size_t> run_of_root;
         for (const auto& e : edges) {
-            const Index root = find(e[0]);
+            const Index root = run_of.find(e[0]);
             auto [it, inserted] = run_of_root.emplace(root, runs.size());
             if (inserted) runs.push_back({{pair.first, pair.second}, 0.0, e});
             runs[it->second].length += (positions.row(e[0]) - positions.row(e[1])).norm();
         }
+        for (const auto& e : edges) run_of.reset(e[0]), run_of.reset(e[1]);
     }
     return runs;
 }

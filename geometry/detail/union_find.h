@@ -1,6 +1,7 @@
 #pragma once
 // Disjoint sets of the integers 0..n-1 (union-find with path halving), for the components,
-// planes and chains that geometry/ groups: one implementation instead of a private one per file.
+// planes, chains and sheets that geometry/ and the PolyCube front-end group: one implementation
+// instead of a private one per file.
 //
 //   UnionFind sets(n);
 //   sets.join(a, b);                   // false when a and b were in one set already
@@ -18,11 +19,9 @@ namespace sa {
 
 class UnionFind {
   public:
-    explicit UnionFind(Index n = 0) : parent_(n) {
+    explicit UnionFind(Index n) : parent_(n) {
         std::iota(parent_.begin(), parent_.end(), Index(0));
     }
-
-    Index size() const { return Index(parent_.size()); }
 
     /// The representative of x's set.
     Index find(Index x) {
