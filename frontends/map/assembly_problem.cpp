@@ -8,6 +8,7 @@
 #include "energies/boundary_angle_energy.h"
 #include "energies/edge_assembly_energy.h"
 #include "energies/vertex_copy_energies.h"
+#include "geometry/homology_loops.h"
 #include "geometry/tagged_simplices.h"
 
 namespace sa {
@@ -20,6 +21,20 @@ int local_index(const SimplicialMesh& mesh, Index s, Index v) {
         if (mesh.simplices(s, k) == v) return k;
     }
     return -1;
+}
+
+/// The surface whose loops are the mesh's (homology_loops.h): the triangles themselves, or a
+/// tetrahedral mesh's boundary facets.
+std::vector<std::array<Index, 3>> surface_triangles(const SimplicialMesh& mesh,
+                                                    const MeshTopology& topology) {
+    std::vector<std::array<Index, 3>> triangles;
+    if (mesh.simplices.cols() == 3) {
+        for (Index t = 0; t < mesh.num_simplices(); ++t)
+            triangles.push_back({mesh.simplices(t, 0), mesh.simplices(t, 1), mesh.simplices(t, 2)});
+    } else {
+        for (const BoundaryFacet& f : topology.boundary_facets) triangles.push_back(f.vertices);
+    }
+    return triangles;
 }
 
 template <int N, int M>
@@ -151,10 +166,42 @@ void AssemblyProblem<D>::build_reduced(const AssemblyInput<D>& in) {
     const MeshTopology& topology = *in.topology;
     const RestFrames<D>& frames = *in.frames;
 
-    // Omega_s: a simplex per tree edge, plus one per handle no tagged simplex contains.
-    tree_ = approximate_steiner_tree(mesh.num_vertices(), topology.edges, in.handles);
+    // Eq. 7 alone glues the simplices only along contractible loops (the Appendix glues simplex
+    // by simplex): around a hole or a handle the A_i may agree across every facet and still
+    // integrate to a map that does not close. Omega_s therefore also follows loops generating the
+    // mesh's H1 (geometry/homology_loops.h; a solid's lie on its boundary): with Eq. 9 at each
+    // loop vertex, sum_k A_{p_k} e_k over a loop telescopes to zero. The Steiner tree ties the
+    // loops to the handles or, in a part without handles, to its anchored simplex, which joins
+    // Omega_s so that its fixed translation removes the loops' common translation.
+    const std::vector<std::vector<Index>> loops =
+        homology_loops(mesh.num_vertices(), surface_triangles(mesh, topology));
+    std::vector<Index> terminals = in.handles;
+    std::vector<std::pair<Index, Index>> anchors;  // (simplex, its vertex in the tree)
+    if (!loops.empty()) {
+        for (const auto& loop : loops) terminals.push_back(loop.front());
+        for (Index s : in.anchored_simplices) {
+            anchors.emplace_back(s, mesh.simplices(s, 0));
+            terminals.push_back(mesh.simplices(s, 0));
+        }
+        std::sort(terminals.begin(), terminals.end());
+        terminals.erase(std::unique(terminals.begin(), terminals.end()), terminals.end());
+    }
+    tree_ = approximate_steiner_tree(mesh.num_vertices(), topology.edges, terminals);
+    num_loops_ = static_cast<Index>(loops.size());
+    if (!loops.empty()) {
+        std::set<GraphEdge> edges(tree_.begin(), tree_.end());
+        for (const auto& loop : loops) {
+            for (std::size_t k = 0; k < loop.size(); ++k) {
+                const Index a = loop[k], b = loop[(k + 1) % loop.size()];
+                edges.insert({std::min(a, b), std::max(a, b)});
+            }
+        }
+        tree_.assign(edges.begin(), edges.end());
+    }
+    // Omega_s: a simplex per tree (and loop) edge, plus one per handle no tagged simplex contains.
     const std::vector<Index> edge_simplex = tag_simplices(mesh, topology, tree_);
     std::set<Index> tagged(edge_simplex.begin(), edge_simplex.end());
+    for (const auto& [s, v] : anchors) tagged.insert(s);
     for (Index h : in.handles) {
         bool covered = false;
         for (Index s : tagged) covered |= local_index(mesh, s, h) >= 0;
@@ -212,6 +259,7 @@ void AssemblyProblem<D>::build_reduced(const AssemblyInput<D>& in) {
     for (std::size_t e = 0; e < tree_.size(); ++e) {
         for (Index v : tree_[e]) at_vertex[v].push_back(edge_simplex[e]);
     }
+    for (const auto& [s, v] : anchors) at_vertex[v].push_back(s);
     std::vector<typename AffinePointAgreementEnergy<D>::Point> points;
     std::vector<std::array<Index, 2 * (D * D + D)>> point_elements;
     for (Index v = 0; v < mesh.num_vertices(); ++v) {

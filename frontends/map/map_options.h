@@ -23,11 +23,11 @@ SolveMode parse_solve_mode(const std::string& name);
 
 /// Which variables carry the translations (section 5.1, "Variants of simplex assembly").
 enum class Variant {
-    /// r-SA: A_i for every simplex, T_p only on the Steiner-tree simplices (default). Its
-    /// assembly makes the A_i agree across shared facets, which glues the mesh only where every
-    /// loop is contractible: around a handle of a solid the A_i may integrate to a map that does
-    /// not close, and Eq. 6 spreads the gap (README.md, "Where we depart from the paper"). f-SA
-    /// closes every loop.
+    /// r-SA: A_i for every simplex, T_p only on the simplices of the Steiner tree through the
+    /// handles and of loops generating the mesh's first homology (default). Eq. 7 alone glues
+    /// the mesh only where every loop is contractible; the loops' translations, agreeing at
+    /// their vertices (Eq. 9), close the map around holes and handles too (README.md, "Where we
+    /// depart from the paper").
     kReduced,
     kFull,    ///< f-SA: A_i and T_i for every simplex (Eqs. 2, 3)
     kVertex,  ///< v-SA: per-simplex copies of the vertex positions

@@ -118,6 +118,7 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
     result.num_variables = engine.problem().num_variables();
     result.num_translation_simplices = assembly.num_translation_simplices();
     result.num_tree_edges = assembly.num_tree_edges();
+    result.num_loops = assembly.num_loops();
     result.num_anchored_simplices = static_cast<Index>(in.anchored_simplices.size());
     result.times.setup += stage.lap();
 

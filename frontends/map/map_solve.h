@@ -188,7 +188,8 @@ struct SimplexAssemblyResult {
     StageTimes times;
     Index num_variables = 0;
     Index num_translation_simplices = 0;  ///< |Omega_s| for r-SA, N for f-SA
-    Index num_tree_edges = 0;
+    Index num_tree_edges = 0;             ///< r-SA: edges of the Steiner tree and of the loops
+    Index num_loops = 0;                  ///< r-SA: loops closed around holes and handles
     Index num_anchored_simplices = 0;
     /// With boundary_injective: boundary vertices whose angle sum is >= 2 pi, before and after
     /// (-1 when not measured).

@@ -132,6 +132,7 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
                           {"variables", r.num_variables},
                           {"translation_simplices", r.num_translation_simplices},
                           {"steiner_tree_edges", r.num_tree_edges},
+                          {"homology_loops", r.num_loops},
                           {"anchored_simplices", r.num_anchored_simplices},
                           {"newton_termination", to_string(r.newton.termination)},
                           {"stopped_because", r.assembly_stop},

@@ -373,13 +373,11 @@ PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSol
         std::max(options.max_time - out.cube_cover_seconds - out.untangle_seconds, 1e-3);
     o.num_threads = options.threads;
     o.mode = SolveMode::kFull;
-    // r-SA makes the linear parts agree across every shared facet (Eq. 7), which glues a mesh
-    // only where every loop is contractible: the paper's argument (its appendix) glues simplex
-    // by simplex and never closes a loop. Around a handle the agreeing A_i may integrate to a map
-    // that does not close; Eq. 6 spreads the gap, the recovered charts are not planar and their
-    // projection onto the planes folds tetrahedra (cup: E~ = 8.6e-22 with charts up to 0.0145 of
-    // the diagonal from their planes, and no hand-over). f-SA assembles the vertices themselves,
-    // which closes every loop (BENCHMARKS.md, session 39).
+    // f-SA for a solid with a handle. Before r-SA's Omega_s followed loops (assembly_problem.h),
+    // its A_i integrated to a map that did not close around cup's handle (E~ = 8.6e-22 with
+    // charts up to 0.0145 of the diagonal from their planes; BENCHMARKS.md, session 39). With
+    // the loops, cup verified in one run of two and the other ended assembled without a
+    // hand-over (session 43), so f-SA stays until that is understood.
     const Index loops = independent_loops(prepared.boundary);
     o.variant = loops > 0 ? Variant::kFull : Variant::kReduced;
     log_line(logger, "polycube: " + std::to_string(loops) +

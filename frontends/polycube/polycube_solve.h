@@ -6,8 +6,7 @@
 //      when folded, untangled in vertex variables with every plane one variable
 //      (PolycubePluginOptions), and the driver starts from that map when it untangles;
 //   2. the driver's disassembly (closest similarity, 4.2), its assembly (Eq. 10: r-SA for a
-//      solid without handles, f-SA for one with: r-SA's assembly does not close the loops around
-//      a handle, polycube_solve.cpp says why) and its
+//      solid without handles, f-SA for one with: polycube_solve.cpp says why) and its
 //      vertex stage, minimizing the conformal barrier E_C (bound K, or none) with the PolyCube
 //      plugin (polycube_plugin()) adding, in the assembly stage,
 //        - planarity a^T A_i e_k = 0 on two normalized edges of every labelled boundary facet of

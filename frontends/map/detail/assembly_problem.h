@@ -4,7 +4,9 @@
 // parts and translations back.
 //
 //   r-SA  variables: vec(A_i) for every simplex, then T_p for the tagged simplices Omega_s of
-//         the Steiner tree through the handles (section 4.3). Terms: edge assembly (Eq. 7) per
+//         the Steiner tree through the handles (section 4.3), and of loops that generate the
+//         mesh's first homology (closing them around holes and handles; assembly_problem.cpp
+//         says why) tied to that tree. Terms: edge assembly (Eq. 7) per
 //         shared facet; handle assembly (Eq. 8) per handle and tagged simplex containing it;
 //         vertex assembly (Eq. 9) between the tagged simplices of tree edges meeting at a tree
 //         vertex (a chain of pairs).
@@ -87,6 +89,8 @@ class AssemblyProblem {
     std::vector<std::pair<Index, Vec<D>>> known_translations(const Eigen::VectorXd& x) const;
 
     Index num_tree_edges() const { return static_cast<Index>(tree_.size()); }
+    /// r-SA: the loops Omega_s follows (homology_loops.h), 0 for a disk or a ball.
+    Index num_loops() const { return num_loops_; }
     Index num_translation_simplices() const { return num_translation_simplices_; }
 
   private:
@@ -102,6 +106,7 @@ class AssemblyProblem {
     std::unique_ptr<SimplexAssemblyEngine<D>> engine_;
     std::vector<GraphEdge> tree_;
     Index num_translation_simplices_ = 0;
+    Index num_loops_ = 0;
     std::vector<std::pair<Index, Vec<D>>> anchor_translations_;  ///< r-SA anchors
 };
 
