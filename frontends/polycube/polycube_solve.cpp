@@ -376,7 +376,7 @@ PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSol
     // f-SA for a solid with a handle. Before r-SA's Omega_s followed loops (assembly_problem.h),
     // its A_i integrated to a map that did not close around cup's handle (E~ = 8.6e-22 with
     // charts up to 0.0145 of the diagonal from their planes; BENCHMARKS.md, session 39). With
-    // the loops, cup verified in one run of two and the other ended assembled without a
+    // the loops, cup verified in two runs of three and the third ended assembled without a
     // hand-over (session 43), so f-SA stays until that is understood.
     const Index loops = independent_loops(prepared.boundary);
     o.variant = loops > 0 ? Variant::kFull : Variant::kReduced;
