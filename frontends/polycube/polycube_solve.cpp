@@ -34,7 +34,7 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
     }
 
     void add_assembly_terms(SimplexAssemblyEngine<3>& engine,
-                            const PluginStage<3>&) const override {
+                            const PluginStage<3>& stage) const override {
         using Engine = SimplexAssemblyEngine<3>;
         if (engine.layout() != Engine::Layout::kLinearParts) {
             throw InvalidArgumentError(
@@ -46,6 +46,7 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
         for (std::size_t k = 0; k < planarity.rows.size(); ++k)
             rows.push_back({planarity.tet[k], planarity.rows[k]});
         engine.add_linear_part_constraints<2>("polycube planarity", rows);
+        add_plane_offsets(engine, stage);
 
         // The angle barriers in A-form: vec(A_t) of each tetrahedron of the fan or star.
         auto a_form = [&](const char* name) {
@@ -279,11 +280,66 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
         return out;
     }
 
+    /// Every boundary vertex on its planes at their start offsets, a^T (A_t u + T_t) = c, per
+    /// labelled triangle and its tetrahedron t, when every such t has a translation (f-SA; in
+    /// r-SA the planes stay free and only the anchored simplex's trace holds the scale).
+    /// Planarity alone (on A) is homogeneous in the map's scale, as are the conformal and angle
+    /// barriers, so E~_assembly fell by shrinking the map where its residuals were large (cup:
+    /// the median (det A)^(1/3) fell from 0.89 to 0.13 while the anchor's stayed near 1;
+    /// BENCHMARKS.md, session 44). The paper's 5.3 keeps the planes of the initial map; the
+    /// vertex stage moves them again (each plane one variable).
+    void add_plane_offsets(SimplexAssemblyEngine<3>& engine, const PluginStage<3>& stage) const {
+        if (stage.mesh == nullptr || stage.frames == nullptr) return;
+        for (Index b = 0; b < p_.boundary.size(); ++b)
+            if (!engine.has_translation(p_.boundary.tet(b))) return;
+        const Eigen::VectorXd& x = engine.problem().variables();
+        auto image_row = [&](Index t, Index v, int axis) {
+            int local = 0;
+            while (stage.mesh->simplices(t, local) != v) ++local;
+            return Eigen::Matrix<double, 1, 12>(
+                engine.image_coefficients(t, stage.frames->corner(t, local)).row(axis));
+        };
+        auto value = [&](const Eigen::Matrix<double, 1, 12>& row, Index t) {
+            const auto vars = engine.affine_variables(t);
+            double sum = 0.0;
+            for (int i = 0; i < 12; ++i) sum += row[i] * x[vars[i]];
+            return sum;
+        };
+        std::vector<double> sum(plane_axis_.size(), 0.0);
+        std::vector<Index> count(plane_axis_.size(), 0);
+        for (Index b = 0; b < p_.boundary.size(); ++b) {
+            const int axis = label_axis(p_.labels[b]);
+            const Index t = p_.boundary.tet(b);
+            for (int k = 0; k < 3; ++k) {
+                const Index v = p_.boundary.triangles(b, k);
+                const int plane = plane_of_vertex_[v][axis];
+                sum[plane] += value(image_row(t, v, axis), t);
+                ++count[plane];
+            }
+        }
+        std::vector<LinearConstraint<12, 3>> rows;
+        rows.reserve(p_.boundary.size());
+        for (Index b = 0; b < p_.boundary.size(); ++b) {
+            const int axis = label_axis(p_.labels[b]);
+            LinearConstraint<12, 3> c;
+            c.variables = engine.affine_variables(p_.boundary.tet(b));
+            for (int k = 0; k < 3; ++k) {
+                const Index v = p_.boundary.triangles(b, k);
+                const int plane = plane_of_vertex_[v][axis];
+                c.rows.coefficients.row(k) = image_row(p_.boundary.tet(b), v, axis);
+                c.rows.rhs[k] = sum[plane] / double(count[plane]);
+            }
+            rows.push_back(c);
+        }
+        engine.add_linear_constraints<12, 3>("polycube planes at their start", rows);
+    }
+
     /// Planes (geometry/polycube_planes.h), and each boundary vertex's planes.
     void build_planes() {
         const PolycubePlanes planes =
             polycube_planes(p_.boundary, p_.charts, p_.mesh.num_vertices());
         plane_axis_ = planes.axis;
+        plane_of_vertex_ = planes.plane_of_vertex;
         for (Index v = 0; v < p_.mesh.num_vertices(); ++v) {
             std::vector<int> mine;
             for (const int plane : planes.plane_of_vertex[v])
@@ -303,8 +359,9 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
     /// untangle_on_planes() tries only below this many bad tetrahedra (the driver calls it from
     /// one thread: at the start, then once per assembly iteration).
     mutable Index retry_below_ = std::numeric_limits<Index>::max();
-    std::vector<int> plane_axis_;                 ///< per plane: its axis
-    std::vector<std::pair<Index, int>> members_;  ///< (boundary vertex, one of its planes)
+    std::vector<int> plane_axis_;                      ///< per plane: its axis
+    std::vector<std::pair<Index, int>> members_;       ///< (boundary vertex, one of its planes)
+    std::vector<std::array<int, 3>> plane_of_vertex_;  ///< PolycubePlanes::plane_of_vertex
 };
 
 }  // namespace
@@ -373,16 +430,16 @@ PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSol
         std::max(options.max_time - out.cube_cover_seconds - out.untangle_seconds, 1e-3);
     o.num_threads = options.threads;
     o.mode = SolveMode::kFull;
-    // f-SA for a solid with a handle. Before r-SA's Omega_s followed loops (assembly_problem.h),
-    // its A_i integrated to a map that did not close around cup's handle (E~ = 8.6e-22 with
-    // charts up to 0.0145 of the diagonal from their planes; BENCHMARKS.md, session 39). With
-    // the loops, cup verified in two runs of three and the third ended assembled without a
-    // hand-over (session 43), so f-SA stays until that is understood.
-    const Index loops = independent_loops(prepared.boundary);
-    o.variant = loops > 0 ? Variant::kFull : Variant::kReduced;
-    log_line(logger, "polycube: " + std::to_string(loops) +
-                         " independent loops (handles) in the solid: " +
-                         (loops > 0 ? "f-SA, which closes them" : "r-SA"));
+    // f-SA: the assembly holds every boundary vertex on its plane at the start's offset
+    // (add_plane_offsets), which needs each boundary tetrahedron's translation. Without the
+    // offsets the assembly shrank the map (with r-SA on cup the median simplex scale fell from
+    // 0.89 to 0.078, the smallest to 0.003), so a tiny E~ no longer meant planar charts: the
+    // likely cause of the r-SA runs on cup that ended assembled and unverified (BENCHMARKS.md,
+    // sessions 39, 43 and 44).
+    o.variant = Variant::kFull;
+    log_line(logger, "polycube: " + std::to_string(independent_loops(prepared.boundary)) +
+                         " independent loops (handles) in the solid; f-SA, the planes held at "
+                         "the start's offsets");
     o.untangle_fallback = false;
     o.handover_ratio = options.handover_ratio;
     SimplexAssemblyObserver observer;

@@ -5,13 +5,15 @@
 //   1. the cube-cover start (geometry/cube_cover.h): planar, axis-aligned charts, possibly folded;
 //      when folded, untangled in vertex variables with every plane one variable
 //      (PolycubePluginOptions), and the driver starts from that map when it untangles;
-//   2. the driver's disassembly (closest similarity, 4.2), its assembly (Eq. 10: r-SA for a
-//      solid without handles, f-SA for one with: polycube_solve.cpp says why) and its
+//   2. the driver's disassembly (closest similarity, 4.2), its assembly (Eq. 10, f-SA) and its
 //      vertex stage, minimizing the conformal barrier E_C (bound K, or none) with the PolyCube
 //      plugin (polycube_plugin()) adding, in the assembly stage,
 //        - planarity a^T A_i e_k = 0 on two normalized edges of every labelled boundary facet of
 //          tetrahedron i (energies/polycube_constraints.h), in E~_assembly: with the edge
 //          assembly of Eq. 7 every chart maps into one plane orthogonal to its axis;
+//        - each boundary vertex on its planes at the start's offsets, a^T (A_i u + T_i) = c, in
+//          E~_assembly (the paper's 5.3; it needs the translations of f-SA): every other term is
+//          blind to the map's scale, and E~ falls as the map shrinks (polycube_solve.cpp);
 //        - the 3D boundary-angle barriers E_e = 1 / (2 pi - theta_e) and E_v = 1 / (4 pi - theta_v)
 //          in A-form (energies/tet_angle_barriers.h; stars of more than kMaxAngleFan tetrahedra
 //          only in the vertex stage);

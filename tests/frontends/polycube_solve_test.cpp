@@ -195,6 +195,37 @@ PluginStage<3> vertex_stage(const PreparedPolycube& prepared, const RestFrames<3
     return stage;
 }
 
+// The assembly terms hold the map's scale (f-SA): at a PolyCube (the cube cover) E~ is 0, and
+// the same map shrunk to half its size, still planar, is no longer assembled, because each
+// boundary vertex is held on its plane at the start's offset. Planarity alone (on A) would give
+// the shrunk map E~ = 0 as well; the assembly then shrank cup toward a point.
+TEST(PolycubeSolve, TheAssemblyHoldsThePlanesAtTheStartOffsets) {
+    const PreparedPolycube prepared =
+        prepared_shape(testing::bent(testing::voxel_tetrahedra(testing::l_shape(), 2), 0.15));
+    const CubeCover cover = cube_cover_map(prepared.mesh, prepared.boundary, prepared.charts);
+    const RestFrames<3> frames = rest_frames<3>(prepared.mesh);
+    const std::vector<Mat<3>> A = linear_parts<3>(prepared.mesh, frames, cover.positions);
+    std::vector<std::pair<Index, Vec<3>>> translations;
+    for (Index t = 0; t < prepared.mesh.num_simplices(); ++t) {
+        const Vec<3> x0 = cover.positions.row(prepared.mesh.simplices(t, 0)).transpose();
+        translations.emplace_back(t, x0 - A[t] * frames.corner(t, 0));
+    }
+    auto assembly_energy = [&](double shrink, bool translations_everywhere) {
+        SimplexAssemblyEngine<3> engine(
+            A, translations_everywhere ? translations : std::vector<std::pair<Index, Vec<3>>>{});
+        PluginStage<3> stage;
+        stage.mesh = &prepared.mesh;
+        stage.frames = &frames;
+        polycube_plugin(prepared)->add_assembly_terms(engine, stage);
+        engine.problem().set_variables(shrink * engine.problem().variables());
+        return engine.assembly_energy();
+    };
+    EXPECT_LT(assembly_energy(1.0, true), 1e-12);
+    EXPECT_GT(assembly_energy(0.5, true), 1e-3);
+    // Without translations (r-SA) only planarity is there: the shrunk map stays assembled.
+    EXPECT_LT(assembly_energy(0.5, false), 1e-12);
+}
+
 // The plugin's projection untangles what flattening folds (PolycubePluginOptions): a valid
 // PolyCube (the cube cover of the shape) with interior vertices pushed through their neighbours
 // comes back inversion-free, every plane's coordinate where it was, and passes verify_polycube
@@ -292,16 +323,16 @@ TEST(PolycubeSolve, TheProjectionUntanglesAFoldLocally) {
     EXPECT_GT(moved, 0);
 }
 
-// r-SA's assembly does not close a loop around a handle (polycube_solve.cpp): a solid with one
-// is solved with f-SA, one without keeps r-SA, and both are verified PolyCubes.
-TEST(PolycubeSolve, ASolidWithAHandleIsAssembledWithTheVertices) {
+// The assembly takes f-SA (its translations hold the planes at their offsets), with or without
+// a handle in the solid, and both maps are verified PolyCubes.
+TEST(PolycubeSolve, SolidsWithAndWithoutAHandleAreAssembledWithTranslations) {
     for (const bool handle : {false, true}) {
         const PreparedPolycube prepared = prepared_shape(testing::bent(
             testing::voxel_tetrahedra(handle ? testing::ring() : testing::l_shape(), 2), 0.15));
         const PolycubeSolve solve = solve_polycube(prepared, {});
         ASSERT_TRUE(solve.success) << solve.message;
         EXPECT_LE(solve.verification.max_planarity, 1e-9);
-        EXPECT_EQ(solve.options.variant, handle ? Variant::kFull : Variant::kReduced);
+        EXPECT_EQ(solve.options.variant, Variant::kFull);
     }
 }
 
