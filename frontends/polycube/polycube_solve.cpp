@@ -285,7 +285,7 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
     /// r-SA the planes stay free and only the anchored simplex's trace holds the scale).
     /// Planarity alone (on A) is homogeneous in the map's scale, as are the conformal and angle
     /// barriers, so E~_assembly fell by shrinking the map where its residuals were large (cup:
-    /// the median (det A)^(1/3) fell from 0.89 to 0.13 while the anchor's stayed near 1;
+    /// the median (det A)^(1/3) fell from 0.89 to 0.145 while the anchor's stayed near 1;
     /// BENCHMARKS.md, session 44). The paper's 5.3 keeps the planes of the initial map; the
     /// vertex stage moves them again (each plane one variable).
     void add_plane_offsets(SimplexAssemblyEngine<3>& engine, const PluginStage<3>& stage) const {
