@@ -292,44 +292,36 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
         if (stage.mesh == nullptr || stage.frames == nullptr) return;
         for (Index b = 0; b < p_.boundary.size(); ++b)
             if (!engine.has_translation(p_.boundary.tet(b))) return;
-        const Eigen::VectorXd& x = engine.problem().variables();
-        auto image_row = [&](Index t, Index v, int axis) {
-            int local = 0;
-            while (stage.mesh->simplices(t, local) != v) ++local;
-            return Eigen::Matrix<double, 1, 12>(
-                engine.image_coefficients(t, stage.frames->corner(t, local)).row(axis));
-        };
-        auto value = [&](const Eigen::Matrix<double, 1, 12>& row, Index t) {
-            const auto vars = engine.affine_variables(t);
-            double sum = 0.0;
-            for (int i = 0; i < 12; ++i) sum += row[i] * x[vars[i]];
-            return sum;
-        };
+        // Rows a^T (A_t u_v + T_t) per labelled triangle; each plane's offset is the mean of its
+        // rows at the start, and becomes their right-hand side.
+        std::vector<LinearConstraint<12, 3>> rows(p_.boundary.size());
         std::vector<double> sum(plane_axis_.size(), 0.0);
         std::vector<Index> count(plane_axis_.size(), 0);
+        const Eigen::VectorXd& x = engine.problem().variables();
         for (Index b = 0; b < p_.boundary.size(); ++b) {
             const int axis = label_axis(p_.labels[b]);
             const Index t = p_.boundary.tet(b);
+            LinearConstraint<12, 3>& c = rows[b];
+            c.variables = engine.affine_variables(t);
+            Eigen::Matrix<double, 12, 1> start;
+            for (int i = 0; i < 12; ++i) start[i] = x[c.variables[i]];
             for (int k = 0; k < 3; ++k) {
                 const Index v = p_.boundary.triangles(b, k);
+                int local = 0;
+                while (stage.mesh->simplices(t, local) != v) ++local;
+                c.rows.coefficients.row(k) =
+                    engine.image_coefficients(t, stage.frames->corner(t, local)).row(axis);
                 const int plane = plane_of_vertex_[v][axis];
-                sum[plane] += value(image_row(t, v, axis), t);
+                sum[plane] += c.rows.coefficients.row(k).dot(start);
                 ++count[plane];
             }
         }
-        std::vector<LinearConstraint<12, 3>> rows;
-        rows.reserve(p_.boundary.size());
         for (Index b = 0; b < p_.boundary.size(); ++b) {
             const int axis = label_axis(p_.labels[b]);
-            LinearConstraint<12, 3> c;
-            c.variables = engine.affine_variables(p_.boundary.tet(b));
             for (int k = 0; k < 3; ++k) {
-                const Index v = p_.boundary.triangles(b, k);
-                const int plane = plane_of_vertex_[v][axis];
-                c.rows.coefficients.row(k) = image_row(p_.boundary.tet(b), v, axis);
-                c.rows.rhs[k] = sum[plane] / double(count[plane]);
+                const int plane = plane_of_vertex_[p_.boundary.triangles(b, k)][axis];
+                rows[b].rows.rhs[k] = sum[plane] / double(count[plane]);
             }
-            rows.push_back(c);
         }
         engine.add_linear_constraints<12, 3>("polycube planes at their start", rows);
     }
