@@ -265,7 +265,9 @@ int run_polycube_command(const PolycubeArguments& arguments) {
                        {"vertex_stage_ran", solve.solve.vertex_stage_ran},
                        {"vertex_stage_iterations", solve.solve.vertex_stage.num_steps()},
                        {"vertex_stage_note", solve.solve.vertex_stage_note},
-                       {"driver_message", solve.solve.message}};
+                       {"driver_message", solve.solve.message},
+                       {"times", solve_times_json(solve.solve)},
+                       {"iterations", assembly_iterations_json(solve.solve)}};
     report["times"] = {{"cube_cover", solve.cube_cover_seconds},
                        {"untangle", solve.untangle_seconds},
                        {"solve", solve.solve_seconds},

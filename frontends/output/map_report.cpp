@@ -72,6 +72,34 @@ nlohmann::json infeasible_report(const MappingProblem& problem,
     return report;
 }
 
+nlohmann::json solve_times_json(const SimplexAssemblyResult& r) {
+    nlohmann::json times = r.times;
+    times["newton_phases"] = r.newton.times;
+    return times;
+}
+
+nlohmann::json assembly_iterations_json(const SimplexAssemblyResult& r) {
+    nlohmann::json iterations = nlohmann::json::array();
+    for (std::size_t k = 0; k < r.iterations.size(); ++k) {
+        const AssemblyRecord& a = r.iterations[k];
+        nlohmann::json row = {{"iteration", a.iteration}, {"energy", a.energy},
+                              {"assembly", a.assembly},   {"barrier", a.barrier},
+                              {"lambda", a.lambda},       {"time", a.time}};
+        if (k < r.newton.iterations.size() && a.iteration > 0) {
+            const IterationRecord& n = r.newton.iterations[k];
+            row["step"] = n.step_length;
+            row["line_search_trials"] = n.line_search_trials;
+            row["gradient_norm"] = n.gradient_norm;
+            row["decrement"] = n.decrement;
+            row["regularization"] = n.regularization;
+            row["iteration_time"] = n.iteration_time;
+            row["factorization_time"] = n.factorization_time;
+        }
+        iterations.push_back(row);
+    }
+    return iterations;
+}
+
 nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOptions& o,
                           const SimplexAssemblyResult& r) {
     nlohmann::json report;
@@ -144,27 +172,8 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
                               {"final_energy", r.vertex_stage.final_energy},
                               {"termination", to_string(r.vertex_stage.termination)}};
     report["fallback"] = r.fallback;
-    nlohmann::json iterations = nlohmann::json::array();
-    for (std::size_t k = 0; k < r.iterations.size(); ++k) {
-        const AssemblyRecord& a = r.iterations[k];
-        nlohmann::json row = {{"iteration", a.iteration}, {"energy", a.energy},
-                              {"assembly", a.assembly},   {"barrier", a.barrier},
-                              {"lambda", a.lambda},       {"time", a.time}};
-        if (k < r.newton.iterations.size() && a.iteration > 0) {
-            const IterationRecord& n = r.newton.iterations[k];
-            row["step"] = n.step_length;
-            row["line_search_trials"] = n.line_search_trials;
-            row["gradient_norm"] = n.gradient_norm;
-            row["decrement"] = n.decrement;
-            row["regularization"] = n.regularization;
-            row["iteration_time"] = n.iteration_time;
-            row["factorization_time"] = n.factorization_time;
-        }
-        iterations.push_back(row);
-    }
-    report["iterations"] = iterations;
-    report["times"] = r.times;
-    report["times"]["newton_phases"] = r.newton.times;
+    report["iterations"] = assembly_iterations_json(r);
+    report["times"] = solve_times_json(r);
     return report;
 }
 

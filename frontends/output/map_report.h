@@ -15,6 +15,15 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
 
 nlohmann::json quality_json(const MapQuality& quality);
 
+/// One row per assembly iteration of `result`: energy, E~_assembly, lambda, time, and from the
+/// first step on Newton's step length, line-search trials, gradient norm, decrement, the
+/// regularization tau its factorization needed, and the iteration's and factorization's seconds.
+nlohmann::json assembly_iterations_json(const SimplexAssemblyResult& result);
+
+/// The seconds of each stage of `result` (StageTimes), with "newton_phases": the assembly's
+/// Newton phases (optim/phase_times.h) summed over its iterations.
+nlohmann::json solve_times_json(const SimplexAssemblyResult& result);
+
 /// The report of a problem stopped before any optimization because its handles make it
 /// infeasible: "input", "message" and "infeasible" (the counts and every simplex, handle and edge
 /// found, handle_feasibility.h), "success": false.

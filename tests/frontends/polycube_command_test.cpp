@@ -193,6 +193,10 @@ TEST_F(PolycubeCommand, EndToEndOnAGeneratedMesh) {
     EXPECT_EQ(report["success"], true);
     EXPECT_EQ(report["verification"]["passed"], true);
     EXPECT_FALSE(report["rounds"].empty());
+    // Where the time went: one row per assembly iteration, and Newton's phases.
+    ASSERT_TRUE(report["solve"]["iterations"].is_array());
+    EXPECT_FALSE(report["solve"]["iterations"].empty());
+    EXPECT_GT(report["solve"]["times"]["newton_phases"]["total"].get<double>(), 0.0);
     // Existing outputs without --force: exit 2 by exception, nothing rewritten.
     EXPECT_THROW(run_polycube_command(arguments), InputError);
 }
