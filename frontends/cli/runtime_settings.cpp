@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <new>
 
 // jemalloc, the allocator the command links, reads `malloc_conf` when it starts, before main
@@ -43,9 +44,43 @@ __attribute__((constructor(101))) void one_blas_thread() {
     blas_threads_set_here = setenv("OPENBLAS_NUM_THREADS", "1", 0) == 0;
 }
 
+/// OpenBLAS (Debian 12's 0.3.21, built for every x86-64 core) picks its kernels from the CPU's
+/// model number, and takes the SSE3 ones ("Prescott") for a model it does not know, even when the
+/// CPU has AVX2 or AVX-512: on a VM reporting an "Intel(R) Xeon(R) Processor" of family 6, model
+/// 207, S1's f-SA factorization (113,849 tetrahedra) took twice as long with them as with the
+/// AVX2 ones (BENCHMARKS.md, session 45). Then the kernels the CPU's features allow are chosen
+/// instead, as OPENBLAS_CORETYPE would have at start: SkylakeX (AVX-512 F, BW, DQ, VL) or Haswell
+/// (AVX2, FMA). Nothing when OPENBLAS_CORETYPE is set, or OpenBLAS is not the BLAS.
+void blas_kernels_for_this_cpu() {
+    if (std::getenv("OPENBLAS_CORETYPE") != nullptr) return;
+    const char* kernels = nullptr;
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+        __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl")) {
+        kernels = "SkylakeX";
+    } else if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) {
+        kernels = "Haswell";
+    } else {
+        return;
+    }
+    using CoreName = char* (*)();
+    using Init = void (*)();
+    auto core = reinterpret_cast<CoreName>(dlsym(RTLD_DEFAULT, "openblas_get_corename"));
+    auto quit = reinterpret_cast<Init>(dlsym(RTLD_DEFAULT, "gotoblas_dynamic_quit"));
+    auto init = reinterpret_cast<Init>(dlsym(RTLD_DEFAULT, "gotoblas_dynamic_init"));
+    if (core == nullptr || quit == nullptr || init == nullptr) return;
+    const char* name = core();
+    if (name == nullptr || std::strcmp(name, "Prescott") != 0) return;
+    // gotoblas_dynamic_init() reads OPENBLAS_CORETYPE as at start; nothing has used the BLAS yet.
+    if (setenv("OPENBLAS_CORETYPE", kernels, 1) != 0) return;
+    quit();
+    init();
+    unsetenv("OPENBLAS_CORETYPE");
+}
+
 }  // namespace
 
 void apply_runtime_settings() {
+    blas_kernels_for_this_cpu();
     if (blas_threads_set_here) unsetenv("OPENBLAS_NUM_THREADS");
     // A shared OpenBLAS started before that constructor ran: one thread, as below, all the same.
     if (!blas_threads_set_here && std::getenv("OPENBLAS_NUM_THREADS") != nullptr) return;

@@ -5,7 +5,9 @@
 
 namespace sa::cli {
 
-/// One OpenBLAS thread, its idle workers joined, unless OPENBLAS_NUM_THREADS says otherwise (and
+/// OpenBLAS's AVX-512 or AVX2 kernels when it fell back to its SSE3 ones on a CPU that has them
+/// but whose model it does not know (runtime_settings.cpp), unless OPENBLAS_CORETYPE is set. And
+/// one OpenBLAS thread, its idle workers joined, unless OPENBLAS_NUM_THREADS says otherwise (and
 /// nothing when the BLAS is not OpenBLAS). Measured on CHOLMOD supernodal factorizations,
 /// OpenBLAS's second thread never paid on these 2-core machines and its spinning (sched_yield)
 /// slowed the small ones, two threads

@@ -1197,5 +1197,23 @@ TEST(MemoryLimit, RunningOutIsOneLineAndExitFour) {
     fs::remove_all(folder);
 }
 
+// ---------------------------------------------------------------------------------------------
+// The command's BLAS: OpenBLAS's SSE3 fallback for a CPU model it does not know is replaced by
+// its AVX2 kernels (runtime_settings.cpp). OPENBLAS_VERBOSE=2 prints "Core: NAME" at each pick.
+
+TEST(CommandBlas, NotTheSse3FallbackOnACpuWithAvx2) {
+    if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma"))
+        GTEST_SKIP() << "this CPU has no AVX2 and FMA";
+    int status = 0;
+    const std::string text = shell(
+        "unset OPENBLAS_CORETYPE; OPENBLAS_VERBOSE=2 " + std::string(SA_EXECUTABLE) + " --version",
+        &status);
+    ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << text;
+    const std::size_t last = text.rfind("Core: ");
+    if (last == std::string::npos) GTEST_SKIP() << "the BLAS is not OpenBLAS built for every core";
+    EXPECT_NE(text.substr(last, text.find('\n', last) - last), "Core: Prescott") << text;
+    EXPECT_NE(text.find("sa 0.1.0\n"), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace sa
