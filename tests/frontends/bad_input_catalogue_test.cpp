@@ -1199,7 +1199,8 @@ TEST(MemoryLimit, RunningOutIsOneLineAndExitFour) {
 
 // ---------------------------------------------------------------------------------------------
 // The command's BLAS: OpenBLAS's SSE3 fallback for a CPU model it does not know is replaced by
-// its AVX2 kernels (runtime_settings.cpp). OPENBLAS_VERBOSE=2 prints "Core: NAME" at each pick.
+// its AVX-512 or AVX2 kernels (runtime_settings.cpp). OPENBLAS_VERBOSE=2 prints "Core: NAME" at
+// each pick.
 
 TEST(CommandBlas, NotTheSse3FallbackOnACpuWithAvx2) {
     if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma"))
