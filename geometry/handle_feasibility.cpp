@@ -307,7 +307,8 @@ HandleFeasibility check_handle_feasibility(const SimplicialMesh& mesh,
 
 InfeasibleProblemError::InfeasibleProblemError(const std::string& source,
                                                HandleFeasibility diagnosis)
-    : Error(source + ": infeasible as posed, no optimization run: " + diagnosis.describe()),
+    : NoSolutionError(source +
+                      ": infeasible as posed, no optimization run: " + diagnosis.describe()),
       diagnosis_(std::move(diagnosis)) {}
 
 }  // namespace sa

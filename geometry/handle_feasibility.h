@@ -86,7 +86,7 @@ HandleFeasibility check_handle_feasibility(const SimplicialMesh& mesh,
                                            const MeshTopology* topology = nullptr);
 
 /// The problem has no solution as posed: what() is "SOURCE: infeasible: " + describe().
-class InfeasibleProblemError : public Error {
+class InfeasibleProblemError : public NoSolutionError {
   public:
     InfeasibleProblemError(const std::string& source, HandleFeasibility diagnosis);
     const HandleFeasibility& diagnosis() const { return diagnosis_; }

@@ -116,7 +116,7 @@ int run(int argc, char** argv) {
         if (subdivide->parsed()) return sa::cli::run_subdivide_command(subdivide_arguments);
     } catch (const std::bad_alloc&) {
         return report("error", sa::cli::out_of_memory_message(), sa::cli::kExitOutOfMemory);
-    } catch (const sa::InfeasibleProblemError& e) {
+    } catch (const sa::NoSolutionError& e) {
         // A problem with no solution as posed: diagnosed, nothing optimized (exit 1, not 2).
         std::cerr << "sa: " << sa::cli::one_line(e.what()) << '\n' << std::flush;
         return sa::cli::kExitNotVerified;

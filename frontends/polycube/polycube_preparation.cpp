@@ -328,6 +328,7 @@ PreparedPolycube prepare_polycube(const SimplicialMesh& mesh, const std::string&
     p.fans = boundary_edge_fans(p.mesh, p.topology, p.boundary);
     p.stars = boundary_vertex_stars(p.mesh, p.topology, p.boundary);
     p.input_volume = tet_mesh_volume(mesh, mesh.vertices);
+    p.angle_bound = polycube_angle_bound(p.boundary, p.charts, p.mesh.vertices);
     p.splits_seconds = stage.lap();
     const SquashedElements& before = p.splits.before;
     log_line(logger, source + ": " + std::to_string(p.charts.size()) +
@@ -344,6 +345,15 @@ PreparedPolycube prepare_polycube(const SimplicialMesh& mesh, const std::string&
                                     " tetrahedra flat on the planes remain (no split repairs them)"
                               : std::string()));
     require_no_flat_tets(p, mesh.num_vertices(), source);
+    if (p.angle_bound.bound > 1.0 + 1e-9) {
+        char bound[32];
+        std::snprintf(bound, sizeof bound, "%.4g", p.angle_bound.bound);
+        log_line(logger, (p.label_source == "computed" ? source : p.label_source) +
+                             ": every valid PolyCube map of these labels has conformal distortion "
+                             ">= " +
+                             bound + ": " + p.angle_bound.worst.front().describe() +
+                             " (polycube_angle_bound.h)");
+    }
     return p;
 }
 

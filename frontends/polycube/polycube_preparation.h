@@ -3,8 +3,9 @@
 // its boundary labelling (from a .flags file, from per-triangle labels of a boundary surface, or
 // computed by closest axis, cleaned and, where chart boundaries turn back, repaired
 // (polycube_label_repair.h), in the input's axes or turned by
-// polycube_orientation(), whichever labelling is better), checked, and the mesh split where
-// planarity would squash it (geometry/polycube_splits.h).
+// polycube_orientation(), whichever labelling is better), checked, the mesh split where
+// planarity would squash it (geometry/polycube_splits.h), and the least conformal distortion the
+// labels force on any valid map measured (geometry/polycube_angle_bound.h).
 //
 //   PolycubeLabelInput input;                 // empty: compute the labels
 //   input.flags = "S1.flags";
@@ -24,6 +25,7 @@
 #include <vector>
 
 #include "frontends/polycube/polycube_verification.h"
+#include "geometry/polycube_angle_bound.h"
 #include "geometry/polycube_boundary_monotonicity.h"
 #include "geometry/polycube_label_cleanup.h"
 #include "geometry/polycube_label_repair.h"
@@ -76,6 +78,8 @@ struct PreparedPolycube {
     /// Chart boundaries of the labels (on `input`) that turn back along their PolyCube edge.
     std::vector<NonMonotoneBoundary> non_monotone;
     PolycubeSplitReport splits;
+    /// What the labels force on `mesh`: every valid PolyCube map has max delta_con >= its bound.
+    PolycubeAngleBound angle_bound;
     double read_labels_seconds = 0.0, splits_seconds = 0.0;
 
     /// Pointers into this object, for verify_polycube().

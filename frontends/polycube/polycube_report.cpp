@@ -69,6 +69,21 @@ nlohmann::json polycube_preparation_json(const PreparedPolycube& p) {
                            {"vertex", b.vertex}});
     }
     labels["non_monotone_boundaries"] = turning;
+    auto finite_or_inf = [](double x) {
+        return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json("inf");
+    };
+    nlohmann::json wedges = nlohmann::json::array();
+    for (const WedgeAngleBound& w : p.angle_bound.worst) {
+        wedges.push_back({{"vertex", w.vertex},
+                          {"label", label_name(w.label)},
+                          {"wedges_at_vertex", w.wedges},
+                          {"triangles", w.triangles},
+                          {"rest_angle_degrees", w.rest_angle * 180.0 / M_PI},
+                          {"polycube_angle_degrees", w.image_angle * 180.0 / M_PI},
+                          {"bound", finite_or_inf(w.bound)}});
+    }
+    labels["distortion_lower_bound"] = {{"bound", finite_or_inf(p.angle_bound.bound)},
+                                        {"worst_wedges", wedges}};
     j["labels"] = labels;
     j["splits"] = {{"squashed_before", squashed_json(p.splits.before)},
                    {"squashed_after", squashed_json(p.splits.after)},

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numeric>
 #include <sstream>
@@ -377,6 +378,19 @@ PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSol
     if (!(options.bound > 1.0)) {
         throw InvalidArgumentError("polycube: bound = " + std::to_string(options.bound) +
                                    ": must be > 1 or +inf");
+    }
+    // What the labels force (polycube_angle_bound.h): a bound below it has no solution.
+    if (options.bound < prepared.angle_bound.bound) {
+        auto number = [](double x, int digits = 6) {
+            char text[40];
+            std::snprintf(text, sizeof text, "%.*g", digits, x);
+            return std::string(text);
+        };
+        throw NoSolutionError("polycube: bound " + number(options.bound, 10) +
+                              ": no valid PolyCube map of these labels has conformal distortion "
+                              "below " +
+                              number(prepared.angle_bound.bound) + ": " +
+                              prepared.angle_bound.worst.front().describe());
     }
     PolycubeSolve out;
     Stopwatch stage;

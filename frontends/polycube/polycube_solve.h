@@ -105,7 +105,9 @@ std::shared_ptr<const AssemblyPlugin<3>> polycube_plugin(const PreparedPolycube&
                                                          const PolycubePluginOptions& options = {});
 
 /// The solve described above. Progress rows go to `logger`. Bad options throw
-/// InvalidArgumentError; numerical outcomes are in the result.
+/// InvalidArgumentError; a finite `bound` below what the labels force
+/// (prepared.angle_bound) throws NoSolutionError before any work; numerical outcomes are in the
+/// result.
 PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSolveOptions& options,
                              const Logger& logger = {});
 

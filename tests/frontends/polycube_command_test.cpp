@@ -197,8 +197,45 @@ TEST_F(PolycubeCommand, EndToEndOnAGeneratedMesh) {
     ASSERT_TRUE(report["solve"]["iterations"].is_array());
     EXPECT_FALSE(report["solve"]["iterations"].empty());
     EXPECT_GT(report["solve"]["times"]["newton_phases"]["total"].get<double>(), 0.0);
+    // What the labels force (polycube_angle_bound.h) holds on the verified map.
+    const double floor =
+        report["preparation"]["labels"]["distortion_lower_bound"]["bound"].get<double>();
+    EXPECT_GT(floor, 1.0);
+    EXPECT_LE(floor, report["verification"]["quality"]["conformal"]["max"].get<double>());
     // Existing outputs without --force: exit 2 by exception, nothing rewritten.
     EXPECT_THROW(run_polycube_command(arguments), InputError);
+}
+
+// A --bound below the distortion the labels force has no solution: refused before the solve
+// (NoSolutionError: the sa command exits 1), nothing written.
+TEST_F(PolycubeCommand, ABoundBelowWhatTheLabelsForceIsRefused) {
+    const SimplicialMesh mesh =
+        testing::bent(testing::voxel_tetrahedra(testing::l_shape(), 2), 0.12);
+    write_medit(path("bent.mesh"), mesh.vertices, mesh.simplices);
+    const PreparedPolycube prepared = prepare_polycube(mesh, "bent.mesh", PolycubeLabelInput{});
+    const double floor = prepared.angle_bound.bound;
+    ASSERT_GT(floor, 1.0);
+    ASSERT_LT(floor, 2.0);
+    CLI::App app;
+    PolycubeArguments arguments;
+    add_polycube_command(app, arguments);
+    std::vector<std::string> args = {
+        "polycube",     "--mesh",       path("bent.mesh"),
+        "--out",        path("o.mesh"), "--report",
+        path("o.json"), "--bound",      std::to_string(0.5 + 0.5 * floor),
+        "--quiet"};
+    std::reverse(args.begin(), args.end());
+    app.parse(args);
+    try {
+        run_polycube_command(arguments);
+        ADD_FAILURE() << "not refused";
+    } catch (const NoSolutionError& e) {
+        EXPECT_NE(std::string(e.what()).find("no valid PolyCube map of these labels"),
+                  std::string::npos)
+            << e.what();
+    }
+    for (const char* name : {"o.mesh", "o.rest.mesh", "o.flags", "o.json", "o.png"})
+        EXPECT_FALSE(fs::exists(path(name))) << name;
 }
 
 }  // namespace
