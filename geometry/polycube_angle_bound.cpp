@@ -77,18 +77,24 @@ PolycubeAngleBound polycube_angle_bound(const TetBoundary& boundary, const Polyc
         return Index(-1);
     };
     // Wedges: a triangle's corner at v joins the corners at v of the triangles of its chart
-    // across its two edges at v (side k runs from corner k to k + 1).
-    Corners wedge(3 * n);
+    // across its two edges at v (side k runs from corner k to k + 1); fans: of any chart.
+    Corners wedge(3 * n), fan(3 * n);
     for (Index b = 0; b < n; ++b) {
         for (int k = 0; k < 3; ++k) {
             for (const int side : {k, (k + 2) % 3}) {
                 const Index other = boundary.adjacent[b][side];
-                if (other < 0 || charts.chart_of[other] != charts.chart_of[b]) continue;
-                const Index c = corner_of(other, tri(b, k));
-                if (c >= 0) wedge.join(3 * b + k, c);
+                const Index c = other < 0 ? -1 : corner_of(other, tri(b, k));
+                if (c < 0) continue;
+                fan.join(3 * b + k, c);
+                if (charts.chart_of[other] == charts.chart_of[b]) wedge.join(3 * b + k, c);
             }
         }
     }
+    // A vertex where the boundary pinches (several fans of triangles) has no PolyCube angles
+    // that this counting knows: it is left out.
+    std::vector<Index> fans_at(positions.rows(), 0);
+    for (Index c = 0; c < 3 * n; ++c)
+        if (fan.root(c) == c) ++fans_at[tri(c / 3, int(c % 3))];
     // Per wedge (its root corner): the rest angles of its corners.
     std::vector<std::vector<double>> angles(3 * n);
     std::vector<Index> wedges_at(positions.rows(), 0);
@@ -105,7 +111,7 @@ PolycubeAngleBound polycube_angle_bound(const TetBoundary& boundary, const Polyc
     // Per vertex, its worst wedge.
     std::vector<WedgeAngleBound> worst_at(positions.rows());
     for (Index c = 0; c < 3 * n; ++c) {
-        if (angles[c].empty()) continue;
+        if (angles[c].empty() || fans_at[tri(c / 3, int(c % 3))] > 1) continue;
         WedgeAngleBound w;
         w.vertex = tri(c / 3, int(c % 3));
         w.chart = charts.chart_of[c / 3];

@@ -56,7 +56,8 @@ struct PolycubeAngleBound {
 double wedge_distortion_bound(const std::vector<double>& rest_angles, double target);
 
 /// The bound of `labels`' charts (polycube_charts() of the boundary) on the mesh with rest
-/// `positions` (#V x 3), keeping the `keep` worst wedges.
+/// `positions` (#V x 3), keeping the `keep` worst wedges. Vertices where the boundary pinches
+/// (its triangles there form several fans) are left out.
 PolycubeAngleBound polycube_angle_bound(const TetBoundary& boundary, const PolycubeCharts& charts,
                                         const Eigen::MatrixXd& positions, int keep = 5);
 

@@ -112,5 +112,23 @@ TEST(PolycubeAngleBound, ATriangleThatMustBeFlatHasNoValidMap) {
     EXPECT_NEAR(b.worst.front().image_angle, M_PI, 1e-15);
 }
 
+TEST(PolycubeAngleBound, APinchedVertexIsLeftOut) {
+    // Two tetrahedra sharing vertex 0 only, each boundary one chart: at vertex 0 each wedge is
+    // a whole fan of its own surface, not half of one PolyCube edge.
+    SimplicialMesh mesh;
+    mesh.vertices.resize(7, 3);
+    mesh.vertices << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, 0, 0, 0, -1, 0, 0, 0, -1;
+    mesh.simplices.resize(2, 4);
+    mesh.simplices << 0, 1, 2, 3, 0, 5, 4, 6;
+    const TetBoundary boundary = tet_boundary(mesh, mesh_topology(mesh, "pinch"));
+    std::vector<int> labels(boundary.size(), 0);
+    for (Index b = 0; b < boundary.size(); ++b) labels[b] = boundary.tet(b) == 0 ? 0 : 1;
+    const PolycubeCharts charts = polycube_charts(boundary, mesh.vertices, labels);
+    ASSERT_EQ(charts.size(), 2);
+    const PolycubeAngleBound b = polycube_angle_bound(boundary, charts, mesh.vertices, 10);
+    EXPECT_EQ(b.worst.size(), 6u);
+    for (const WedgeAngleBound& w : b.worst) EXPECT_NE(w.vertex, 0);
+}
+
 }  // namespace
 }  // namespace sa
