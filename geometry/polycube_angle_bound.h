@@ -37,8 +37,8 @@ struct WedgeAngleBound {
     double image_angle = 0.0;  ///< the PolyCube angle that needs the least distortion
     double bound = 1.0;        ///< delta_con some tetrahedron under the wedge reaches at least
 
-    /// "at vertex 11 (0-based) the +X chart's wedge of 0.742 degrees (2 triangles) must open to
-    /// 180".
+    /// "at vertex 11 (0-based) the +X chart's wedge of 0.7416 degrees (2 triangles) must open
+    /// to 180".
     std::string describe() const;
 };
 
