@@ -27,4 +27,16 @@ ProjectionMode parse_projection(const std::string& name) {
                                "' (expected clamp, abs, shift or none)");
 }
 
+namespace detail {
+
+bool project_large_block_by_eigenvalues(double* h, int n, ProjectionMode mode, double epsilon) {
+    Eigen::Map<Eigen::MatrixXd> block(h, n, n);
+    Eigen::MatrixXd copy = block;
+    const bool changed = project_by_eigenvalues(copy, mode, epsilon);
+    if (changed) block = copy;
+    return changed;
+}
+
+}  // namespace detail
+
 }  // namespace sa

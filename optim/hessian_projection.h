@@ -38,23 +38,27 @@ bool is_diagonally_dominant_above(const Mat<N>& h, double epsilon) {
     return true;
 }
 
-/// Projects the symmetric block `h` in place (see the modes above). Returns true when `h` was
-/// changed. A block with a non-finite entry is left as it is and reported as unchanged; the caller
-/// checks finiteness.
-template <int N>
-bool project_hessian_block(Mat<N>& h, ProjectionMode mode, double epsilon) {
-    if (mode == ProjectionMode::kNone) return false;
-    if (is_diagonally_dominant_above<N>(h, epsilon)) return false;
-    if (!h.allFinite()) return false;
+/// Blocks larger than this are eigen-decomposed by one dynamic-size solver compiled once, in
+/// hessian_projection.cpp: a fixed-size SelfAdjointEigenSolver costs minutes of optimized
+/// compilation and gigabytes of compiler memory for each arity above a dozen or so, and elements
+/// that large (the boundary-angle barrier's fans, up to 48 variables) are few.
+inline constexpr int kLargestFixedSizeProjection = 12;
+
+namespace detail {
+
+/// The eigen-decomposition part of project_hessian_block() on a square matrix type (fixed or
+/// dynamic size).
+template <class Matrix>
+bool project_by_eigenvalues(Matrix& h, ProjectionMode mode, double epsilon) {
     if (mode == ProjectionMode::kShift) {
-        Eigen::SelfAdjointEigenSolver<Mat<N>> eig(h, Eigen::EigenvaluesOnly);
+        Eigen::SelfAdjointEigenSolver<Matrix> eig(h, Eigen::EigenvaluesOnly);
         const double smallest = eig.eigenvalues()(0);
         if (smallest >= epsilon) return false;
         h.diagonal().array() += epsilon - smallest;
         return true;
     }
-    Eigen::SelfAdjointEigenSolver<Mat<N>> eig(h);
-    Vec<N> values = eig.eigenvalues();
+    Eigen::SelfAdjointEigenSolver<Matrix> eig(h);
+    typename Eigen::SelfAdjointEigenSolver<Matrix>::RealVectorType values = eig.eigenvalues();
     bool changed = false;
     for (int i = 0; i < values.size(); ++i) {
         double v = mode == ProjectionMode::kAbs ? std::abs(values(i)) : values(i);
@@ -64,6 +68,26 @@ bool project_hessian_block(Mat<N>& h, ProjectionMode mode, double epsilon) {
     }
     if (changed) h = eig.eigenvectors() * values.asDiagonal() * eig.eigenvectors().transpose();
     return changed;
+}
+
+/// project_by_eigenvalues() on the n x n column-major block at `h`, with a dynamic-size solver.
+bool project_large_block_by_eigenvalues(double* h, int n, ProjectionMode mode, double epsilon);
+
+}  // namespace detail
+
+/// Projects the symmetric block `h` in place (see the modes above). Returns true when `h` was
+/// changed. A block with a non-finite entry is left as it is and reported as unchanged; the caller
+/// checks finiteness.
+template <int N>
+bool project_hessian_block(Mat<N>& h, ProjectionMode mode, double epsilon) {
+    if (mode == ProjectionMode::kNone) return false;
+    if (is_diagonally_dominant_above<N>(h, epsilon)) return false;
+    if (!h.allFinite()) return false;
+    if constexpr (N > kLargestFixedSizeProjection) {
+        return detail::project_large_block_by_eigenvalues(h.data(), N, mode, epsilon);
+    } else {
+        return detail::project_by_eigenvalues(h, mode, epsilon);
+    }
 }
 
 }  // namespace sa

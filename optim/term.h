@@ -68,7 +68,8 @@ class Term {
     /// `gradient_slots` and, unless it is null, `scale` times its Hessian into `hessian_slots`.
     virtual double evaluate(const Eigen::VectorXd& x, double scale, double* gradient_slots,
                             double* hessian_slots) const = 0;
-    /// Projects every element Hessian in `hessian_slots` in place; returns how many changed.
+    /// Projects every element Hessian in `hessian_slots` in place; returns how many changed. A
+    /// convex term's (is_convex()) are positive semidefinite already and left as they are.
     virtual Index project(const Eigen::VectorXd& x, double* hessian_slots, ProjectionMode mode,
                           double epsilon) const = 0;
     /// Smallest max_step over the elements (+inf when the energy has none).
@@ -158,6 +159,39 @@ class EnergyTerm final : public Term {
 
     Index project(const Eigen::VectorXd& x, double* hessian_slots, ProjectionMode mode,
                   double epsilon) const override {
+        // A convex energy's blocks are positive semidefinite already: the Hessian assembler never
+        // projects them, and no eigen-solver of their arity need be compiled.
+        if constexpr (is_convex_energy<E>()) {
+            return 0;
+        } else {
+            return project_elements(x, hessian_slots, mode, epsilon);
+        }
+    }
+
+    double max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const override {
+        if constexpr (!HasMaxStep<E>) {
+            return kInfinity;
+        } else {
+            return tbb::parallel_reduce(
+                range(), kInfinity,
+                [&](const tbb::blocked_range<Index>& r, double smallest) {
+                    for (Index e = r.begin(); e != r.end(); ++e) {
+                        smallest = std::min(
+                            smallest, double(energy_.max_step(e, gather(x, e), gather(dx, e))));
+                    }
+                    return smallest;
+                },
+                [](double a, double b) { return std::min(a, b); });
+        }
+    }
+
+    double element_value(Index e, const Eigen::VectorXd& x) const override {
+        return energy_.value(e, gather(x, e));
+    }
+
+  private:
+    Index project_elements(const Eigen::VectorXd& x, double* hessian_slots, ProjectionMode mode,
+                           double epsilon) const {
         if (mode == ProjectionMode::kNone) return 0;
         return tbb::parallel_deterministic_reduce(
             range(), Index{0},
@@ -195,28 +229,6 @@ class EnergyTerm final : public Term {
             std::plus<Index>());
     }
 
-    double max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const override {
-        if constexpr (!HasMaxStep<E>) {
-            return kInfinity;
-        } else {
-            return tbb::parallel_reduce(
-                range(), kInfinity,
-                [&](const tbb::blocked_range<Index>& r, double smallest) {
-                    for (Index e = r.begin(); e != r.end(); ++e) {
-                        smallest = std::min(
-                            smallest, double(energy_.max_step(e, gather(x, e), gather(dx, e))));
-                    }
-                    return smallest;
-                },
-                [](double a, double b) { return std::min(a, b); });
-        }
-    }
-
-    double element_value(Index e, const Eigen::VectorXd& x) const override {
-        return energy_.value(e, gather(x, e));
-    }
-
-  private:
     /// Block k of element e's Hessian slots.
     static Eigen::Map<Mat<B>> block_slot(double* hessian_slots, Index e, int k) {
         return Eigen::Map<Mat<B>>(hessian_slots + std::size_t(e) * N * B + std::size_t(k) * B * B);

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "optim/hessian_projection.h"
@@ -7,12 +8,13 @@
 namespace sa {
 namespace {
 
-Mat<4> random_symmetric(std::mt19937& rng, const Vec<4>& eigenvalues) {
+template <int N>
+Mat<N> random_symmetric(std::mt19937& rng, const Vec<N>& eigenvalues) {
     std::normal_distribution<double> normal;
-    Mat<4> a;
-    for (int i = 0; i < 16; ++i) a(i) = normal(rng);
-    const Eigen::HouseholderQR<Mat<4>> qr(a);
-    const Mat<4> q = qr.householderQ();
+    Mat<N> a;
+    for (int i = 0; i < N * N; ++i) a(i) = normal(rng);
+    const Eigen::HouseholderQR<Mat<N>> qr(a);
+    const Mat<N> q = qr.householderQ();
     return q * eigenvalues.asDiagonal() * q.transpose();
 }
 
@@ -79,6 +81,38 @@ TEST(HessianProjection, NoneLeavesIndefiniteBlock) {
     Mat<4> h = original;
     EXPECT_FALSE(project_hessian_block<4>(h, ProjectionMode::kNone, 1e-8));
     EXPECT_EQ(h, original);
+}
+
+// Past kLargestFixedSizeProjection, blocks go to a dynamic-size solver: same modes, same results.
+TEST(HessianProjection, LargeBlocksAreProjectedAlike) {
+    constexpr int N = 20;
+    static_assert(N > kLargestFixedSizeProjection);
+    std::mt19937 rng(6);
+    const Vec<N> spectrum = Vec<N>::LinSpaced(-5.0, 7.0);
+    const double eps = 1e-3;
+    const auto eigenvalues = [](const Mat<N>& h) {
+        return Vec<N>(Eigen::SelfAdjointEigenSolver<Mat<N>>(h).eigenvalues());
+    };
+
+    Mat<N> h = random_symmetric<N>(rng, spectrum);
+    EXPECT_TRUE(project_hessian_block<N>(h, ProjectionMode::kClamp, eps));
+    EXPECT_LT((eigenvalues(h) - spectrum.cwiseMax(eps)).cwiseAbs().maxCoeff(), 1e-11);
+
+    h = random_symmetric<N>(rng, spectrum);
+    EXPECT_TRUE(project_hessian_block<N>(h, ProjectionMode::kAbs, eps));
+    Vec<N> mirrored = spectrum.cwiseAbs().cwiseMax(eps);
+    std::sort(mirrored.begin(), mirrored.end());
+    EXPECT_LT((eigenvalues(h) - mirrored).cwiseAbs().maxCoeff(), 1e-11);
+
+    const Mat<N> original = random_symmetric<N>(rng, spectrum);
+    h = original;
+    EXPECT_TRUE(project_hessian_block<N>(h, ProjectionMode::kShift, eps));
+    EXPECT_TRUE((h - original).isApprox((5.0 + eps) * Mat<N>::Identity(), 1e-11));
+
+    const Mat<N> positive = random_symmetric<N>(rng, Vec<N>::LinSpaced(0.5, 3.0));
+    h = positive;
+    EXPECT_FALSE(project_hessian_block<N>(h, ProjectionMode::kClamp, eps));
+    EXPECT_EQ(h, positive);
 }
 
 }  // namespace
