@@ -11,9 +11,9 @@ namespace {
 template <int N>
 Mat<N> random_symmetric(std::mt19937& rng, const Vec<N>& eigenvalues) {
     std::normal_distribution<double> normal;
-    Mat<N> a;
+    Eigen::MatrixXd a(N, N);
     for (int i = 0; i < N * N; ++i) a(i) = normal(rng);
-    const Eigen::HouseholderQR<Mat<N>> qr(a);
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(a);
     const Mat<N> q = qr.householderQ();
     return q * eigenvalues.asDiagonal() * q.transpose();
 }
@@ -90,8 +90,9 @@ TEST(HessianProjection, LargeBlocksAreProjectedAlike) {
     std::mt19937 rng(6);
     const Vec<N> spectrum = Vec<N>::LinSpaced(-5.0, 7.0);
     const double eps = 1e-3;
+    // Checked with dynamic-size solvers: a fixed-size one of this arity is slow to compile.
     const auto eigenvalues = [](const Mat<N>& h) {
-        return Vec<N>(Eigen::SelfAdjointEigenSolver<Mat<N>>(h).eigenvalues());
+        return Vec<N>(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(h).eigenvalues());
     };
 
     Mat<N> h = random_symmetric<N>(rng, spectrum);
