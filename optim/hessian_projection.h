@@ -39,9 +39,9 @@ bool is_diagonally_dominant_above(const Mat<N>& h, double epsilon) {
 }
 
 /// Blocks larger than this are eigen-decomposed by one dynamic-size solver compiled once, in
-/// hessian_projection.cpp: a fixed-size SelfAdjointEigenSolver costs minutes of optimized
-/// compilation and gigabytes of compiler memory for each arity above a dozen or so, and elements
-/// that large (the boundary-angle barrier's fans, up to 48 variables) are few.
+/// hessian_projection.cpp: a fixed-size SelfAdjointEigenSolver per arity above a dozen or so is
+/// slow to compile and needs gigabytes of compiler memory (BENCHMARKS.md, "CI time (session
+/// 47)"), and elements that large (the boundary-angle barrier's fans, up to 48 variables) are few.
 inline constexpr int kLargestFixedSizeProjection = 12;
 
 namespace detail {
