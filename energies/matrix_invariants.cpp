@@ -1,5 +1,6 @@
 #include "energies/matrix_invariants.h"
 
+#include <Eigen/Geometry>
 #include <Eigen/SVD>
 
 namespace sa {
@@ -31,8 +32,8 @@ Dual<9> sigma_sum_3d(const Mat<3>& A) {
     const int pairs[3][2] = {{0, 1}, {1, 2}, {0, 2}};
     for (const auto& p : pairs) {
         const int i = p[0], j = p[1];
-        const Mat<3> twist = (U.col(i) * V.col(j).transpose() - U.col(j) * V.col(i).transpose()) /
-                             std::sqrt(2.0);
+        const Mat<3> twist =
+            (U.col(i) * V.col(j).transpose() - U.col(j) * V.col(i).transpose()) / std::sqrt(2.0);
         const Vec<9> q = Eigen::Map<const Vec<9>>(twist.data());
         result.hessian += (2.0 / (s[i] + s[j])) * q * q.transpose();
     }
@@ -68,7 +69,7 @@ MatrixInvariants<double> matrix_invariants<3>(const Mat<3>& A, bool with_sigma_s
 
 template <>
 MatrixInvariants<Dual<4>> matrix_invariants_with_derivatives<2>(const Mat<2>& A,
-                                                                 bool with_sigma_sum) {
+                                                                bool with_sigma_sum) {
     const Vec<4> a = Eigen::Map<const Vec<4>>(A.data());
     MatrixInvariants<Dual<4>> m;
     m.I1 = Dual<4>(a.squaredNorm(), 2.0 * a, 2.0 * Mat<4>::Identity());
@@ -88,7 +89,7 @@ MatrixInvariants<Dual<4>> matrix_invariants_with_derivatives<2>(const Mat<2>& A,
 
 template <>
 MatrixInvariants<Dual<9>> matrix_invariants_with_derivatives<3>(const Mat<3>& A,
-                                                                 bool with_sigma_sum) {
+                                                                bool with_sigma_sum) {
     const Vec<9> a = Eigen::Map<const Vec<9>>(A.data());
     MatrixInvariants<Dual<9>> m;
     m.I1 = Dual<9>(a.squaredNorm(), 2.0 * a, 2.0 * Mat<9>::Identity());

@@ -13,7 +13,7 @@ bool project_rotation_invariant_hessian(const Mat<D>& A, Mat<D * D>& h, Projecti
                                         double epsilon) {
     constexpr int N = D * D;
     if (mode == ProjectionMode::kNone) return false;
-    if (is_diagonally_dominant_above<N>(h, epsilon)) return false;
+    if (is_diagonally_dominant_above(h, epsilon)) return false;
     if (!h.allFinite()) return false;
     if (!(A.determinant() > 0.0)) return project_hessian_block<N>(h, mode, epsilon);
 

@@ -18,13 +18,14 @@
 //     solid angle of (a, b, c) (Van Oosterom and Strackee 1983):
 //         2 atan2(det[a, b, c], |a||b||c| + (a.b)|c| + (a.c)|b| + (b.c)|a|)   in (0, 2 pi)
 //
-// Two variable layouts, as for the 2D barrier (energies/boundary_angle_energy.h):
-//   DihedralSumEnergy<K>, SolidAngleSumEnergy<K>   A-form: vec(A_k) of the K tetrahedra around
-//       the edge or vertex (9 K variables, column-major), each tetrahedron's rest edge vectors in
-//       its rest frame: the assembly stage of Simplex Assembly. K <= kMaxAngleFan.
-//   DihedralSumVertexEnergy<M>, SolidAngleSumVertexEnergy<M>   vertex form: the positions of the
-//       edge's two vertices (or the vertex) and of its M ring vertices; each tetrahedron names
-//       its other vertices by their place in the ring: the vertex stage.
+// Two variable layouts, as for the 2D barrier (energies/boundary_angle_energy.h), each of
+// run-time arity (optim/dynamic_element_energy.h: one term for fans and stars of any size):
+//   DihedralSumEnergy, SolidAngleSumEnergy   A-form: vec(A_k) of the K tetrahedra around the edge
+//       or vertex (9 K variables, column-major), each tetrahedron's rest edge vectors in its rest
+//       frame: the assembly stage of Simplex Assembly.
+//   DihedralSumVertexEnergy, SolidAngleSumVertexEnergy   vertex form: the positions of the edge's
+//       two vertices (or the vertex) and of its M ring vertices; each tetrahedron names its other
+//       vertices by their place in the ring: the vertex stage.
 // Derivatives: each angle by forward-mode autodiff over its own 9 (A-form) or 12 (vertex form)
 // variables (optim/dual.h), then the chain rule: with E = f(theta), f' = E^2, f'' = 2 E^3,
 //     grad E = f' sum_k grad phi_k,   Hess E = f' sum_k Hess phi_k + f'' grad theta grad theta^T.
@@ -32,33 +33,22 @@
 // positive semidefinite Hessian for 9 x 9 or 12 x 12 eigen-decompositions instead of one of the
 // whole element. In A-form the rank-one term is the only coupling between the K tetrahedra, and
 // a dense 9K x 9K element makes the Newton system's factorization several times denser (cup:
-// BENCHMARKS.md, PolyCube); so the A-forms declare hessian_block = 9 (optim/element_energy.h)
-// and their project_hessian() replaces the rank-one term by its block-diagonal majorizer
+// BENCHMARKS.md, PolyCube); so the A-forms declare hessian_block = 9 (their Hessians are the
+// diagonal 9 x 9 blocks, side by side) and their project_hessian() replaces the rank-one term's
+// blocks by those of its block-diagonal majorizer
 //     f'' grad theta grad theta^T  <=  K f'' sum_k grad phi_k grad phi_k^T
 // (Cauchy-Schwarz: (sum_k g_k . z_k)^2 <= K sum_k (g_k . z_k)^2), which keeps the Newton step a
-// descent direction. value_gradient_hessian() still returns the exact Hessian.
-//
-// Sizes: the element's Hessian is a fixed-size matrix, and Eigen refuses fixed-size objects over
-// 128 KB, so an element has at most 126 variables: kMaxAngleFan = 14 tetrahedra in A-form and
-// kMaxAngleRing = 40 ring vertices in vertex form. On ../shared/data/polycube (after the splits)
-// boundary edges have at most 7 tetrahedra and 8 ring vertices, boundary vertices up to 31
-// tetrahedra and 20 ring vertices: the vertex form covers every boundary vertex, the vertex
-// barrier's A-form only those with at most 14 tetrahedra (85-95% of them; BENCHMARKS.md,
-// PolyCube).
+// descent direction. value_gradient_hessian() returns the exact Hessian's blocks.
 
 #include <array>
 #include <cmath>
-#include <type_traits>
 #include <vector>
 
 #include "optim/dual.h"
-#include "optim/hessian_projection.h"
+#include "optim/dynamic_element_energy.h"
 #include "optim/types.h"
 
 namespace sa {
-
-inline constexpr int kMaxAngleFan = 14;
-inline constexpr int kMaxAngleRing = 40;
 
 template <class T>
 using Vec3T = Eigen::Matrix<T, 3, 1>;
@@ -116,274 +106,80 @@ inline double angle_sum_barrier(double theta, double limit) {
     return theta < limit ? 1.0 / (limit - theta) : kInfinity;
 }
 
-namespace detail {
-
-/// theta = sum_k phi_k(x[index_k]) over `parts` angles of B variables each, and
-/// E = 1 / (limit - theta). `angle(k, y, defined)` evaluates angle k on its variables y (double or
-/// Dual<B>). With `dtheta`: the gradient of theta. With g and h: E's gradient and Hessian; with
-/// `projection` set, the Hessian is projected block by block (see the header), `changed` telling
-/// whether a block changed. Returns E, +inf when an angle is undefined or theta reaches the limit
-/// (theta is still returned in `theta_out` then, +inf for an undefined angle).
-template <int N, int B, class Index_, class Angle>
-double angle_sum_energy(double limit, const Vec<N>& x, int parts, const Index_& index,
-                        const Angle& angle, double* theta_out, Vec<N>* dtheta_out, Vec<N>* g,
-                        Mat<N>* h, const ProjectionMode* projection = nullptr, double epsilon = 0.0,
-                        bool* changed = nullptr, bool majorize_coupling = false) {
-    double theta = 0.0;
-    const bool derivatives = g != nullptr || dtheta_out != nullptr;
-    std::vector<Dual<B>> phi(derivatives ? parts : 0);
-    for (int k = 0; k < parts; ++k) {
-        const std::array<int, B> at = index(k);
-        Vec<B> y;
-        for (int i = 0; i < B; ++i) y[i] = x[at[i]];
-        bool defined = true;
-        if (derivatives) {
-            phi[k] = angle(k, Dual<B>::variables(y), &defined);
-            theta += phi[k].value;
-        } else {
-            theta += angle(k, y, &defined);
-        }
-        if (!defined) {
-            if (theta_out != nullptr) *theta_out = kInfinity;
-            return kInfinity;
-        }
-    }
-    if (theta_out != nullptr) *theta_out = theta;
-    Vec<N> dtheta = Vec<N>::Zero();
-    for (int k = 0; k < int(phi.size()); ++k) {
-        const std::array<int, B> at = index(k);
-        for (int i = 0; i < B; ++i) dtheta[at[i]] += phi[k].gradient[i];
-    }
-    if (dtheta_out != nullptr) *dtheta_out = dtheta;
-    const double e = sa::angle_sum_barrier(theta, limit);  // detail:: has another
-    if (!std::isfinite(e)) return kInfinity;
-    if (g == nullptr) return e;
-    // E' = E^2 and E'' = 2 E^3 with respect to theta.
-    const double d1 = e * e, d2 = 2.0 * d1 * e;
-    h->setZero();
-    for (int k = 0; k < parts; ++k) {
-        const std::array<int, B> at = index(k);
-        Mat<B> block = phi[k].hessian;
-        if (projection != nullptr) {
-            const bool c = project_hessian_block<B>(block, *projection, epsilon / d1);
-            if (changed != nullptr) *changed = *changed || c;
-        }
-        for (int i = 0; i < B; ++i) {
-            for (int j = 0; j < B; ++j) (*h)(at[i], at[j]) += d1 * block(i, j);
-        }
-    }
-    *g = d1 * dtheta;
-    if (majorize_coupling) {  // the angles' blocks are disjoint (A-form)
-        for (int k = 0; k < parts; ++k) {
-            const std::array<int, B> at = index(k);
-            for (int i = 0; i < B; ++i) {
-                for (int j = 0; j < B; ++j) {
-                    (*h)(at[i], at[j]) +=
-                        double(parts) * d2 * phi[k].gradient[i] * phi[k].gradient[j];
-                }
-            }
-        }
-    } else {
-        h->noalias() += d2 * dtheta * dtheta.transpose();
-    }
-    return e;
-}
-
-/// vec(A) (9 values, column-major) times a rest vector.
-template <class T, class Y>
-Vec3T<T> apply(const Y& a, const Eigen::Vector3d& r) {
-    return Vec3T<T>(a[0] * r[0] + a[3] * r[1] + a[6] * r[2],
-                    a[1] * r[0] + a[4] * r[1] + a[7] * r[2],
-                    a[2] * r[0] + a[5] * r[1] + a[8] * r[2]);
-}
-
-/// Point i (3 values from 3 i) of y.
-template <class T, class Y>
-Vec3T<T> point(const Y& y, int i) {
-    return Vec3T<T>(y[3 * i], y[3 * i + 1], y[3 * i + 2]);
-}
-
-/// The four barriers share this: Derived gives kLimit (2 pi or 4 pi), kBlock (the variables of
-/// one angle, B), parts(e), index(e, k) (an angle's B variables within the element) and
-/// angle(e, k, y, defined).
-template <class Derived, int N, int B>
-struct AngleSumEnergyBase {
-    static constexpr int arity = N;
-
-    double value(Index e, const Vec<N>& x) const {
-        return evaluate(e, x, nullptr, nullptr, nullptr, nullptr);
-    }
-    double value_gradient_hessian(Index e, const Vec<N>& x, Vec<N>& g, Mat<N>& h) const {
-        return evaluate(e, x, nullptr, nullptr, &g, &h);
-    }
-    bool project_hessian(Index e, const Vec<N>& x, Mat<N>& h, ProjectionMode mode,
-                         double epsilon) const {
-        if (mode == ProjectionMode::kNone) return false;
-        // Derived declares hessian_block when its angles' blocks are disjoint (the A-forms).
-        constexpr bool block_diagonal = requires {
-            Derived::hessian_block;
-        };
-        // The projection is computed from x, block by block; `h` holds the term's weight times
-        // the exact Hessian (its diagonal blocks when block_diagonal), so that weight is
-        // measured against the exact Hessian and carried over to the result.
-        Vec<N> g;
-        Mat<N> exact;
-        if (!std::isfinite(evaluate(e, x, nullptr, nullptr, &g, &exact))) return false;
-        double along = 0.0, norm = 0.0;
-        for (int j = 0; j < N; ++j) {
-            for (int i = 0; i < N; ++i) {
-                if (block_diagonal && i / B != j / B) continue;
-                along += h(i, j) * exact(i, j);
-                norm += exact(i, j) * exact(i, j);
-            }
-        }
-        const double weight = norm > 0.0 ? along / norm : 1.0;
-        if (!(weight > 0.0) || !std::isfinite(weight)) return false;
-        bool changed = false;
-        Mat<N> projected;
-        const double energy = detail::angle_sum_energy<N, B>(
-            Derived::kLimit, x, self().parts(e), [&](int k) { return self().index(e, k); },
-            [&](int k, const auto& y, bool* defined) { return self().angle(e, k, y, defined); },
-            nullptr, nullptr, &g, &projected, &mode, epsilon / weight, &changed, block_diagonal);
-        // The majorizer changes the Hessian whether or not a block was projected.
-        if (!std::isfinite(energy) || !(changed || block_diagonal)) return false;
-        h = weight * projected;
-        return true;
-    }
-    /// theta of element e at x (+inf when an angle is undefined), and its gradient when
-    /// `gradient` is given: defined beyond the limit too, for a descent that brings theta below
-    /// it.
-    double angle_sum(Index e, const Vec<N>& x, Vec<N>* gradient = nullptr) const {
-        double theta = 0.0;
-        evaluate(e, x, &theta, gradient, nullptr, nullptr);
-        return theta;
-    }
-
-  private:
-    const Derived& self() const { return static_cast<const Derived&>(*this); }
-    double evaluate(Index e, const Vec<N>& x, double* theta, Vec<N>* dtheta, Vec<N>* g,
-                    Mat<N>* h) const {
-        return detail::angle_sum_energy<N, B>(
-            Derived::kLimit, x, self().parts(e), [&](int k) { return self().index(e, k); },
-            [&](int k, const auto& y, bool* defined) { return self().angle(e, k, y, defined); },
-            theta, dtheta, g, h);
-    }
-};
-
-/// The index array of block k in the A-form: vec(A_k) at 9 k.
-template <int B>
-std::array<int, B> contiguous_block(int k) {
-    std::array<int, B> at;
-    for (int i = 0; i < B; ++i) at[i] = B * k + i;
-    return at;
-}
-
-}  // namespace detail
-
-/// E_e in A-form over the K tetrahedra around a boundary edge.
-template <int K>
-struct DihedralSumEnergy : detail::AngleSumEnergyBase<DihedralSumEnergy<K>, 9 * K, 9> {
+/// The tetrahedra around boundary edges in A-form: per element, each tetrahedron's rest vectors
+/// in its rest frame, from the edge's first vertex: the edge and the two other vertices, ordered
+/// so that det[edge, u, w] > 0.
+struct DihedralFans {
     static constexpr int hessian_block = 9;
-    static_assert(K >= 1 && K <= kMaxAngleFan);
-    static constexpr double kLimit = 2.0 * M_PI;
-    /// Rest vectors of one tetrahedron in its rest frame, from the edge's first vertex: the edge
-    /// and the two other vertices, ordered so that det[edge, u, w] > 0.
     struct Tet {
         Eigen::Vector3d edge, u, w;
     };
-    std::vector<std::array<Tet, K>> fans;  ///< one per element
+    std::vector<std::vector<Tet>> fans;  ///< one per element
 
-    int parts(Index) const { return K; }
-    std::array<int, 9> index(Index, int k) const { return detail::contiguous_block<9>(k); }
-    template <class Y>
-    auto angle(Index e, int k, const Y& y, bool* defined) const {
-        using T = std::decay_t<decltype(y[0])>;
-        const Tet& t = fans[e][k];
-        return dihedral_angle<T>(detail::apply<T>(y, t.edge), detail::apply<T>(y, t.u),
-                                 detail::apply<T>(y, t.w), defined);
-    }
+    Index num_elements() const { return static_cast<Index>(fans.size()); }
+    int element_arity(Index e) const { return 9 * static_cast<int>(fans[e].size()); }
 };
 
-/// E_e in vertex form: variables p (0..2), q (3..5), then ring vertex m at 6 + 3 m (M of them).
-template <int M>
-struct DihedralSumVertexEnergy
-    : detail::AngleSumEnergyBase<DihedralSumVertexEnergy<M>, 3 * M + 6, 12> {
-    static_assert(M >= 2 && M <= kMaxAngleRing);
-    static constexpr double kLimit = 2.0 * M_PI;
-    /// Per element: per tetrahedron (p, q, ring[i], ring[j]) its (i, j), ordered so that the rest
-    /// det[q - p, r_i - p, r_j - p] > 0.
+/// The tetrahedra around boundary edges in vertex form (variables p (0..2), q (3..5), then ring
+/// vertex m at 6 + 3 m): per element, per tetrahedron (p, q, ring[i], ring[j]) its (i, j),
+/// ordered so that the rest det[q - p, r_i - p, r_j - p] > 0.
+struct DihedralRings {
     std::vector<std::vector<std::array<int, 2>>> tets;
 
-    int parts(Index e) const { return static_cast<int>(tets[e].size()); }
-    std::array<int, 12> index(Index e, int k) const {
-        std::array<int, 12> at;
-        for (int c = 0; c < 3; ++c) {
-            at[c] = c;
-            at[3 + c] = 3 + c;
-            at[6 + c] = 6 + 3 * tets[e][k][0] + c;
-            at[9 + c] = 6 + 3 * tets[e][k][1] + c;
-        }
-        return at;
-    }
-    template <class Y>
-    auto angle(Index, int, const Y& y, bool* defined) const {
-        using T = std::decay_t<decltype(y[0])>;
-        const Vec3T<T> p = detail::point<T>(y, 0);
-        return dihedral_angle<T>(detail::point<T>(y, 1) - p, detail::point<T>(y, 2) - p,
-                                 detail::point<T>(y, 3) - p, defined);
-    }
+    Index num_elements() const { return static_cast<Index>(tets.size()); }
 };
 
-/// E_v in A-form over the K tetrahedra around a boundary vertex.
-template <int K>
-struct SolidAngleSumEnergy : detail::AngleSumEnergyBase<SolidAngleSumEnergy<K>, 9 * K, 9> {
+/// The tetrahedra around boundary vertices in A-form: per element, each tetrahedron's rest
+/// vectors in its rest frame from the vertex to its three others, ordered so that
+/// det[a, b, c] > 0.
+struct SolidAngleStars {
     static constexpr int hessian_block = 9;
-    static_assert(K >= 1 && K <= kMaxAngleFan);
-    static constexpr double kLimit = 4.0 * M_PI;
-    /// Rest vectors of one tetrahedron in its rest frame from the vertex to its three others,
-    /// ordered so that det[a, b, c] > 0.
     struct Tet {
         Eigen::Vector3d a, b, c;
     };
-    std::vector<std::array<Tet, K>> stars;  ///< one per element
+    std::vector<std::vector<Tet>> stars;  ///< one per element
 
-    int parts(Index) const { return K; }
-    std::array<int, 9> index(Index, int k) const { return detail::contiguous_block<9>(k); }
-    template <class Y>
-    auto angle(Index e, int k, const Y& y, bool* defined) const {
-        using T = std::decay_t<decltype(y[0])>;
-        const Tet& t = stars[e][k];
-        return solid_angle<T>(detail::apply<T>(y, t.a), detail::apply<T>(y, t.b),
-                              detail::apply<T>(y, t.c), defined);
-    }
+    Index num_elements() const { return static_cast<Index>(stars.size()); }
+    int element_arity(Index e) const { return 9 * static_cast<int>(stars[e].size()); }
 };
 
-/// E_v in vertex form: variables v (0..2), then ring vertex m at 3 + 3 m (M of them).
-template <int M>
-struct SolidAngleSumVertexEnergy
-    : detail::AngleSumEnergyBase<SolidAngleSumVertexEnergy<M>, 3 * M + 3, 12> {
-    static_assert(M >= 3 && M <= kMaxAngleRing);
-    static constexpr double kLimit = 4.0 * M_PI;
-    /// Per element: per tetrahedron (v, ring[i], ring[j], ring[k]) its (i, j, k), ordered so that
-    /// the rest det[r_i - v, r_j - v, r_k - v] > 0.
+/// The tetrahedra around boundary vertices in vertex form (variables v (0..2), then ring vertex
+/// m at 3 + 3 m): per element, per tetrahedron (v, ring[i], ring[j], ring[k]) its (i, j, k),
+/// ordered so that the rest det[r_i - v, r_j - v, r_k - v] > 0.
+struct SolidAngleRings {
     std::vector<std::vector<std::array<int, 3>>> tets;
 
-    int parts(Index e) const { return static_cast<int>(tets[e].size()); }
-    std::array<int, 12> index(Index e, int k) const {
-        std::array<int, 12> at;
-        for (int c = 0; c < 3; ++c) {
-            at[c] = c;
-            for (int m = 0; m < 3; ++m) at[3 + 3 * m + c] = 3 + 3 * tets[e][k][m] + c;
-        }
-        return at;
-    }
-    template <class Y>
-    auto angle(Index, int, const Y& y, bool* defined) const {
-        using T = std::decay_t<decltype(y[0])>;
-        const Vec3T<T> v = detail::point<T>(y, 0);
-        return solid_angle<T>(detail::point<T>(y, 1) - v, detail::point<T>(y, 2) - v,
-                              detail::point<T>(y, 3) - v, defined);
-    }
+    Index num_elements() const { return static_cast<Index>(tets.size()); }
 };
+
+/// The barrier on the angle sums of the elements `Geometry` describes (one of the four above),
+/// an energy of run-time arity. Compiled once for each, in tet_angle_barriers.cpp.
+template <class Geometry>
+struct AngleSumEnergy : Geometry {
+    static constexpr int arity = kDynamicArity;
+
+    double value(Index e, ConstVectorRef x) const;
+    double value_gradient_hessian(Index e, ConstVectorRef x, VectorRef g, MatrixRef h) const;
+    bool project_hessian(Index e, ConstVectorRef x, MatrixRef h, ProjectionMode mode,
+                         double epsilon) const;
+    /// theta of element e at x (+inf when an angle is undefined), and its gradient when
+    /// `gradient` is given: defined beyond the limit too, for a descent that brings theta below
+    /// it.
+    double angle_sum(Index e, ConstVectorRef x, Eigen::VectorXd* gradient = nullptr) const;
+};
+
+extern template struct AngleSumEnergy<DihedralFans>;
+extern template struct AngleSumEnergy<DihedralRings>;
+extern template struct AngleSumEnergy<SolidAngleStars>;
+extern template struct AngleSumEnergy<SolidAngleRings>;
+
+/// E_e in A-form over the tetrahedra around a boundary edge.
+using DihedralSumEnergy = AngleSumEnergy<DihedralFans>;
+/// E_e in vertex form.
+using DihedralSumVertexEnergy = AngleSumEnergy<DihedralRings>;
+/// E_v in A-form over the tetrahedra around a boundary vertex.
+using SolidAngleSumEnergy = AngleSumEnergy<SolidAngleStars>;
+/// E_v in vertex form.
+using SolidAngleSumVertexEnergy = AngleSumEnergy<SolidAngleRings>;
 
 }  // namespace sa

@@ -1,6 +1,7 @@
 // Twists a tetrahedral bar by a quarter turn without inverting a tetrahedron, as a user of
 // sa::optim would: a volumetric energy of one's own (3D symmetric Dirichlet over vertex positions,
 // autodiff derivatives, max_step from the cubic det(E + s D) = 0), a lambda pull, a fixed end.
+#include <Eigen/Geometry>
 #include <iostream>
 
 #include "energies/polynomial_roots.h"

@@ -1,5 +1,6 @@
 #include "geometry/polycube_angle_bound.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

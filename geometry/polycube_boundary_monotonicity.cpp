@@ -1,5 +1,6 @@
 #include "geometry/polycube_boundary_monotonicity.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <map>

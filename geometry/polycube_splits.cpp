@@ -1,5 +1,6 @@
 #include "geometry/polycube_splits.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cstdint>
 #include <map>

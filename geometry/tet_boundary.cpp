@@ -1,5 +1,6 @@
 #include "geometry/tet_boundary.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 
 #include "geometry/detail/union_find.h"

@@ -1,6 +1,8 @@
 #pragma once
 // The element-energy interface: what a type must provide to be summed over many elements by a
 // Problem. An element energy of arity N evaluates one element from the N variables it names.
+// (Elements whose number of variables varies, such as fans of any size, have an energy of
+// run-time arity instead: dynamic_element_energy.h.)
 //
 // Required members (E is the energy type, x the element's N variables):
 //

@@ -40,24 +40,23 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     : problem_id_(problem.id()), structure_version_(problem.structure_version()) {
     const Index n = problem.num_variables();
     const int num_terms = problem.num_terms();
-    // Per term, out of the loops below: its arity and its elements' variables (num_elements x
-    // arity), instead of virtual calls for every incidence.
-    std::vector<int> arity(num_terms), block(num_terms);
-    std::vector<const Index*> variables(num_terms);
-    for (TermId t = 0; t < num_terms; ++t) {
-        arity[t] = problem.term(t).arity();
-        block[t] = problem.term(t).hessian_block();
-        variables[t] = problem.term(t).all_element_variables();
-    }
-    auto element_variables = [&](TermId t, Index e) { return variables[t] + e * arity[t]; };
-    // The local rows [first, first + block) that local column `local` of term t couples with.
-    auto block_first = [&](TermId t, int local) { return local - local % block[t]; };
+    // Per term, out of the loops below: where its elements' variables and slots are, instead of
+    // virtual calls for every incidence.
+    std::vector<TermLayout> layout(num_terms);
+    for (TermId t = 0; t < num_terms; ++t) layout[t] = problem.term(t).layout();
+    auto element_variables = [&](TermId t, Index e) {
+        return layout[t].variables + layout[t].begin(e);
+    };
+    // The local rows [first, first + block) that local column `local` of element e couples with.
+    auto block_first = [&](TermId t, Index e, int local) {
+        return local - local % layout[t].block_of(e);
+    };
 
     // Free variables: used by some term and not fixed, numbered in variable order.
     std::vector<unsigned char> used(n, 0);
     for (TermId t = 0; t < num_terms; ++t) {
-        const Index entries = problem.term(t).num_elements() * arity[t];
-        for (Index k = 0; k < entries; ++k) used[variables[t][k]] = 1;
+        const std::int64_t entries = layout[t].num_entries();
+        for (std::int64_t k = 0; k < entries; ++k) used[layout[t].variables[k]] = 1;
     }
     free_of_variable_.assign(n, -1);
     for (Index v = 0; v < n; ++v) {
@@ -73,12 +72,11 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     hessian_offset_.resize(num_terms);
     std::int64_t gradient_size = 0, hessian_size = 0;
     for (TermId t = 0; t < num_terms; ++t) {
-        const Term& term = problem.term(t);
-        const std::int64_t ne = term.num_elements(), N = term.arity();
+        const bool quadratic = problem.term(t).is_quadratic();
         gradient_offset_[t] = gradient_size;
-        gradient_size += ne * N;
-        hessian_offset_[t] = term.is_quadratic() ? -1 : hessian_size;
-        if (!term.is_quadratic()) hessian_size += ne * N * term.hessian_block();
+        gradient_size += layout[t].num_entries();
+        hessian_offset_[t] = quadratic ? -1 : hessian_size;
+        if (!quadratic) hessian_size += layout[t].num_hessian_slots();
     }
     assign_prefaulted(gradient_slots_, std::size_t(gradient_size), 0.0);
     assign_prefaulted(hessian_slots_, std::size_t(hessian_size), 0.0);
@@ -86,9 +84,9 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     // Incidences of each free variable, ordered by (term, element, local index).
     std::vector<std::int64_t> incidence_begin(nf + 1, 0);
     for (TermId t = 0; t < num_terms; ++t) {
-        const Index entries = problem.term(t).num_elements() * arity[t];
-        for (Index k = 0; k < entries; ++k) {
-            const Index j = free_of_variable_[variables[t][k]];
+        const std::int64_t entries = layout[t].num_entries();
+        for (std::int64_t k = 0; k < entries; ++k) {
+            const Index j = free_of_variable_[layout[t].variables[k]];
             if (j >= 0) ++incidence_begin[j];
         }
     }
@@ -97,10 +95,11 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     {
         std::vector<std::int64_t> cursor(incidence_begin.begin(), incidence_begin.end() - 1);
         for (TermId t = 0; t < num_terms; ++t) {
-            const Index ne = problem.term(t).num_elements();
-            const Index* vars = variables[t];
+            const Index ne = layout[t].num_elements;
+            const Index* vars = layout[t].variables;
             for (Index e = 0; e < ne; ++e) {
-                for (int k = 0; k < arity[t]; ++k, ++vars) {
+                const int n = layout[t].arity_of(e);
+                for (int k = 0; k < n; ++k, ++vars) {
                     const Index j = free_of_variable_[*vars];
                     if (j >= 0) incidences[cursor[j]++] = Incidence{t, e, k};
                 }
@@ -114,7 +113,7 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     tbb::parallel_for(std::size_t(0), incidences.size(), [&](std::size_t p) {
         const Incidence& in = incidences[p];
         gradient_source_[p] =
-            gradient_offset_[in.term] + std::int64_t(in.element) * arity[in.term] + in.local;
+            gradient_offset_[in.term] + layout[in.term].begin(in.element) + in.local;
     });
 
     // Quadratic terms: evaluated and projected (unless convex; negative curvature clamped to
@@ -125,11 +124,10 @@ HessianAssembler::HessianAssembler(const Problem& problem)
     for (TermId t = 0; t < num_terms; ++t) {
         const Term& term = problem.term(t);
         if (!term.is_quadratic()) continue;
-        const std::size_t N = std::size_t(term.arity());
         std::vector<double> g;
-        assign_prefaulted(g, std::size_t(term.num_elements()) * N, 0.0);
+        assign_prefaulted(g, std::size_t(layout[t].num_entries()), 0.0);
         std::vector<double>& h = quadratic_hessians.emplace_back();
-        assign_prefaulted(h, g.size() * std::size_t(term.hessian_block()), 0.0);
+        assign_prefaulted(h, std::size_t(layout[t].num_hessian_slots()), 0.0);
         term.evaluate(x, 1.0, g.data(), h.data());
         if (!term.is_convex()) term.project(x, h.data(), ProjectionMode::kClamp, 0.0);
         quadratic_index[t] = static_cast<int>(quadratic_parts_.size());
@@ -162,8 +160,9 @@ HessianAssembler::HessianAssembler(const Problem& problem)
         for (std::int64_t p = incidence_begin[j]; p < incidence_begin[j + 1]; ++p) {
             const Incidence& in = incidences[p];
             const Index* vars = element_variables(in.term, in.element);
-            const int first = block_first(in.term, in.local);
-            for (int r = first; r < first + block[in.term]; ++r) {
+            const int first = block_first(in.term, in.element, in.local);
+            const int block = layout[in.term].block_of(in.element);
+            for (int r = first; r < first + block; ++r) {
                 const Index i = free_of_variable_[vars[r]];
                 if (i > j && c.seen[i] != visit) {
                     c.seen[i] = visit;
@@ -179,11 +178,12 @@ HessianAssembler::HessianAssembler(const Problem& problem)
         for (std::int64_t p = incidence_begin[j]; p < incidence_begin[j + 1]; ++p) {
             const Incidence& in = incidences[p];
             const Index* vars = element_variables(in.term, in.element);
-            const int first = block_first(in.term, in.local);
-            for (int r = first; r < first + block[in.term]; ++r) {
+            const int first = block_first(in.term, in.element, in.local);
+            const int block = layout[in.term].block_of(in.element);
+            for (int r = first; r < first + block; ++r) {
                 const Index i = free_of_variable_[vars[r]];
                 if (i < j) continue;
-                visit(c.slot[i], in, hessian_slot(block[in.term], in.local, r));
+                visit(c.slot[i], in, hessian_slot(block, in.local, r));
             }
         }
     };
@@ -267,13 +267,12 @@ HessianAssembler::HessianAssembler(const Problem& problem)
                 c.quadratic_touched.assign(num_quadratic * length, 0);
                 for_each_contribution(j, c, [&](Index k, const Incidence& in, std::int64_t local) {
                     const int q = quadratic_index[in.term];
-                    const std::int64_t stride = std::int64_t(arity[in.term]) * block[in.term];
+                    const std::int64_t first = layout[in.term].hessian_begin(in.element);
                     if (q < 0) {
-                        entry_source_[c.cursor[k]++] =
-                            hessian_offset_[in.term] + std::int64_t(in.element) * stride + local;
+                        entry_source_[c.cursor[k]++] = hessian_offset_[in.term] + first + local;
                     } else {
                         c.quadratic_value[q * length + k] +=
-                            quadratic_hessians[q][std::size_t(in.element * stride + local)];
+                            quadratic_hessians[q][std::size_t(first + local)];
                         c.quadratic_touched[q * length + k] = 1;
                     }
                 });

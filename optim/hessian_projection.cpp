@@ -1,5 +1,7 @@
 #include "optim/hessian_projection.h"
 
+#include <Eigen/Eigenvalues>
+
 #include "optim/errors.h"
 
 namespace sa {
@@ -27,16 +29,67 @@ ProjectionMode parse_projection(const std::string& name) {
                                "' (expected clamp, abs, shift or none)");
 }
 
-namespace detail {
+namespace {
 
-bool project_large_block_by_eigenvalues(double* h, int n, ProjectionMode mode, double epsilon) {
-    Eigen::Map<Eigen::MatrixXd> block(h, n, n);
-    Eigen::MatrixXd copy = block;
-    const bool changed = project_by_eigenvalues(copy, mode, epsilon);
-    if (changed) block = copy;
+/// Eigenvalues of the symmetric `h` clamped (or mirrored) to epsilon, or shifted, in place.
+template <class Matrix>
+bool project_symmetric(Matrix& h, ProjectionMode mode, double epsilon) {
+    if (mode == ProjectionMode::kShift) {
+        Eigen::SelfAdjointEigenSolver<Matrix> eig(h, Eigen::EigenvaluesOnly);
+        const double smallest = eig.eigenvalues()(0);
+        if (smallest >= epsilon) return false;
+        h.diagonal().array() += epsilon - smallest;
+        return true;
+    }
+    Eigen::SelfAdjointEigenSolver<Matrix> eig(h);
+    typename Eigen::SelfAdjointEigenSolver<Matrix>::RealVectorType values = eig.eigenvalues();
+    bool changed = false;
+    for (Eigen::Index i = 0; i < values.size(); ++i) {
+        double v = mode == ProjectionMode::kAbs ? std::abs(values(i)) : values(i);
+        v = std::max(v, epsilon);
+        changed |= v != values(i);
+        values(i) = v;
+    }
+    if (changed) h = eig.eigenvectors() * values.asDiagonal() * eig.eigenvectors().transpose();
     return changed;
 }
 
+}  // namespace
+
+bool project_hessian_block(MatrixRef h, ProjectionMode mode, double epsilon) {
+    if (mode == ProjectionMode::kNone) return false;
+    if (is_diagonally_dominant_above(h, epsilon)) return false;
+    if (!h.allFinite()) return false;
+    Eigen::MatrixXd copy = h;
+    const bool changed = project_symmetric(copy, mode, epsilon);
+    if (changed) h = copy;
+    return changed;
+}
+
+namespace detail {
+
+template <int N>
+bool project_by_eigenvalues(Mat<N>& h, ProjectionMode mode, double epsilon) {
+    return project_symmetric(h, mode, epsilon);
+}
+
 }  // namespace detail
+
+static_assert(kLargestFixedSizeProjection == 12, "instantiate every size up to it below");
+#define SA_PROJECT_BY_EIGENVALUES(N) \
+    template bool detail::project_by_eigenvalues<N>(Mat<N>&, ProjectionMode, double);
+SA_PROJECT_BY_EIGENVALUES(1)
+SA_PROJECT_BY_EIGENVALUES(2)
+SA_PROJECT_BY_EIGENVALUES(3)
+SA_PROJECT_BY_EIGENVALUES(4)
+SA_PROJECT_BY_EIGENVALUES(5)
+SA_PROJECT_BY_EIGENVALUES(6)
+SA_PROJECT_BY_EIGENVALUES(7)
+SA_PROJECT_BY_EIGENVALUES(8)
+SA_PROJECT_BY_EIGENVALUES(9)
+SA_PROJECT_BY_EIGENVALUES(10)
+SA_PROJECT_BY_EIGENVALUES(11)
+SA_PROJECT_BY_EIGENVALUES(12)
+#undef SA_PROJECT_BY_EIGENVALUES
 
 }  // namespace sa

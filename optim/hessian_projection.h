@@ -11,7 +11,7 @@
 // A block is left unchanged, without an eigen-decomposition, when Gershgorin's theorem already
 // proves every eigenvalue >= epsilon: H_ii - sum_{j != i} |H_ij| >= epsilon for every row i.
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/Core>
 #include <cmath>
 #include <string>
 
@@ -26,11 +26,11 @@ std::string to_string(ProjectionMode mode);
 ProjectionMode parse_projection(const std::string& name);
 
 /// True when every Gershgorin disc of `h` lies in [epsilon, inf).
-template <int N>
-bool is_diagonally_dominant_above(const Mat<N>& h, double epsilon) {
-    for (int i = 0; i < h.rows(); ++i) {
+template <class Matrix>
+bool is_diagonally_dominant_above(const Matrix& h, double epsilon) {
+    for (Eigen::Index i = 0; i < h.rows(); ++i) {
         double off = 0.0;
-        for (int j = 0; j < h.cols(); ++j) {
+        for (Eigen::Index j = 0; j < h.cols(); ++j) {
             if (j != i) off += std::abs(h(i, j));
         }
         if (h(i, i) - off < epsilon) return false;
@@ -38,55 +38,36 @@ bool is_diagonally_dominant_above(const Mat<N>& h, double epsilon) {
     return true;
 }
 
-/// Blocks larger than this are eigen-decomposed by one dynamic-size solver compiled once, in
-/// hessian_projection.cpp: a fixed-size SelfAdjointEigenSolver per arity above a dozen or so is
-/// slow to compile and needs gigabytes of compiler memory (BENCHMARKS.md, "CI time (session
-/// 47)"), and elements that large (the boundary-angle barrier's fans, up to 48 variables) are few.
+/// The largest block projected by a fixed-size eigen-solver. The solvers of sizes 1 to this are
+/// compiled once, in hessian_projection.cpp; larger blocks go through one dynamic-size solver
+/// compiled there too: a fixed-size solver per size is slow to compile and needs gigabytes of
+/// compiler memory (BENCHMARKS.md, "Build time").
 inline constexpr int kLargestFixedSizeProjection = 12;
+
+/// Projects the symmetric block `h` in place (see the modes above), of any size. Returns true
+/// when `h` was changed. A block with a non-finite entry is left as it is and reported as
+/// unchanged; the caller checks finiteness.
+bool project_hessian_block(MatrixRef h, ProjectionMode mode, double epsilon);
 
 namespace detail {
 
-/// The eigen-decomposition part of project_hessian_block() on a square matrix type (fixed or
-/// dynamic size).
-template <class Matrix>
-bool project_by_eigenvalues(Matrix& h, ProjectionMode mode, double epsilon) {
-    if (mode == ProjectionMode::kShift) {
-        Eigen::SelfAdjointEigenSolver<Matrix> eig(h, Eigen::EigenvaluesOnly);
-        const double smallest = eig.eigenvalues()(0);
-        if (smallest >= epsilon) return false;
-        h.diagonal().array() += epsilon - smallest;
-        return true;
-    }
-    Eigen::SelfAdjointEigenSolver<Matrix> eig(h);
-    typename Eigen::SelfAdjointEigenSolver<Matrix>::RealVectorType values = eig.eigenvalues();
-    bool changed = false;
-    for (int i = 0; i < values.size(); ++i) {
-        double v = mode == ProjectionMode::kAbs ? std::abs(values(i)) : values(i);
-        v = std::max(v, epsilon);
-        changed |= v != values(i);
-        values(i) = v;
-    }
-    if (changed) h = eig.eigenvectors() * values.asDiagonal() * eig.eigenvectors().transpose();
-    return changed;
-}
-
-/// project_by_eigenvalues() on the n x n column-major block at `h`, with a dynamic-size solver.
-bool project_large_block_by_eigenvalues(double* h, int n, ProjectionMode mode, double epsilon);
+/// The eigen-decomposition part of project_hessian_block<N>(), instantiated in
+/// hessian_projection.cpp for N = 1 .. kLargestFixedSizeProjection.
+template <int N>
+bool project_by_eigenvalues(Mat<N>& h, ProjectionMode mode, double epsilon);
 
 }  // namespace detail
 
-/// Projects the symmetric block `h` in place (see the modes above). Returns true when `h` was
-/// changed. A block with a non-finite entry is left as it is and reported as unchanged; the caller
-/// checks finiteness.
+/// project_hessian_block() on a fixed-size block.
 template <int N>
 bool project_hessian_block(Mat<N>& h, ProjectionMode mode, double epsilon) {
     if (mode == ProjectionMode::kNone) return false;
-    if (is_diagonally_dominant_above<N>(h, epsilon)) return false;
+    if (is_diagonally_dominant_above(h, epsilon)) return false;
     if (!h.allFinite()) return false;
     if constexpr (N > kLargestFixedSizeProjection) {
-        return detail::project_large_block_by_eigenvalues(h.data(), N, mode, epsilon);
+        return project_hessian_block(MatrixRef(h), mode, epsilon);
     } else {
-        return detail::project_by_eigenvalues(h, mode, epsilon);
+        return detail::project_by_eigenvalues<N>(h, mode, epsilon);
     }
 }
 

@@ -32,6 +32,22 @@ void Problem::check_element_index(const std::string& term, std::size_t element, 
     }
 }
 
+void Problem::check_element_arity(const std::string& term, Index element, int arity, int expected,
+                                  int block) {
+    std::ostringstream msg;
+    msg << "term '" << term << "': element " << element << " names " << arity << " variables";
+    if (arity == 0) {
+        msg << "; an element names at least one";
+    } else if (arity != expected) {
+        msg << ", its energy's data expects " << expected;
+    } else if (block > 0 && arity % block != 0) {
+        msg << ", not a multiple of the energy's Hessian block " << block;
+    } else {
+        return;
+    }
+    throw InvalidArgumentError(msg.str());
+}
+
 void Problem::check_element_data(const std::string& term, std::size_t elements,
                                  const std::vector<std::size_t>& sizes, const char* what) {
     for (std::size_t k = 0; k < sizes.size(); ++k) {

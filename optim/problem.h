@@ -29,9 +29,10 @@
 #include <type_traits>
 #include <vector>
 
+#include "optim/dynamic_energy_term.h"
+#include "optim/energy_term.h"
 #include "optim/errors.h"
 #include "optim/lambda_energy.h"
-#include "optim/term.h"
 
 namespace sa {
 
@@ -107,6 +108,33 @@ class Problem {
         return static_cast<TermId>(terms_.size() - 1);
     }
 
+    /// Adds `energy` of run-time arity (dynamic_element_energy.h) over `elements`, each naming
+    /// its own number of variables, with `weight`. Throws InvalidArgumentError naming the term
+    /// and element for an index out of range, an element whose arity differs from the one the
+    /// energy's data expects (its optional element_arity(e)) or is not a multiple of its
+    /// hessian_block, and for an element count that differs from the energy's num_elements().
+    template <DynamicElementEnergy E>
+    TermId add_term(std::string name, E energy, RaggedElements elements, double weight = 1.0) {
+        if constexpr (HasElementCount<E>) {
+            check_element_data(name, std::size_t(elements.size()),
+                               {std::size_t(energy.num_elements())},
+                               "the energy's per-element data covers");
+        }
+        constexpr int block = dynamic_hessian_block_of<E>();
+        for (Index e = 0; e < elements.size(); ++e) {
+            int expected = elements.arity(e);
+            if constexpr (HasElementArity<E>) expected = energy.element_arity(e);
+            check_element_arity(name, e, elements.arity(e), expected, block);
+            for (Index v : elements[e]) check_element_index(name, std::size_t(e), v);
+        }
+        auto term = std::make_unique<DynamicEnergyTerm<E>>(std::move(name), std::move(energy),
+                                                           std::move(elements), 1.0);
+        term->set_weight(weight);
+        terms_.push_back(std::move(term));
+        ++structure_version_;
+        return static_cast<TermId>(terms_.size() - 1);
+    }
+
     /// Adds the energy `function(x, e)` of each element e, written once over the scalar type
     /// (lambda_energy.h): x is the element's N variables (Eigen::Matrix<T, N, 1>, T double or
     /// Dual<N>), the value a T. Gradients and Hessians come from automatic differentiation.
@@ -166,6 +194,10 @@ class Problem {
 
   private:
     void check_element_index(const std::string& term, std::size_t element, Index v) const;
+    /// An element of run-time arity: at least one variable, `expected` of them, a multiple of
+    /// `block` (when > 0).
+    static void check_element_arity(const std::string& term, Index element, int arity, int expected,
+                                    int block);
     static void check_element_data(const std::string& term, std::size_t elements,
                                    const std::vector<std::size_t>& sizes, const char* what);
 

@@ -1,5 +1,6 @@
 #include "optim/term.h"
 
+#include <cmath>
 #include <sstream>
 
 #include "optim/errors.h"

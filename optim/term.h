@@ -1,31 +1,24 @@
 #pragma once
-// A term: one element energy applied to many elements, each element naming `arity` entries of the
+// A term: one element energy applied to many elements, each element naming some entries of the
 // problem's variable vector, times a weight the caller may change between iterations.
 //
-// `Term` is the type-erased interface the assembler and the line search use; `EnergyTerm<E>`
-// implements it for any ElementEnergy E, with the per-element calls inlined.
+// `Term` is the type-erased interface the assembler and the line search use. Two implementations:
+// EnergyTerm<E> (energy_term.h) for an ElementEnergy of fixed arity N, every element naming N
+// variables, and DynamicEnergyTerm<E> (dynamic_energy_term.h) for a DynamicElementEnergy, each
+// element naming its own number. Problem::add_term() makes either.
 //
-// Slot layout used by evaluate()/project(): element e of a term of arity N and Hessian block B
-// (hessian_block(), N for a dense element) owns gradient slots [e*N, e*N + N) and Hessian slots
-// [e*N*B, e*N*B + N*B): its N / B diagonal B x B blocks, each column-major, block after block
-// (for B = N, the N x N Hessian column-major). hessian_slot(B, column, row) gives the place of
-// an entry of a block within the element's slots.
+// Slot layout used by evaluate()/project() (TermLayout gives the offsets): element e of arity n
+// and Hessian block B (hessian_block, n for a dense element) owns gradient slots
+// [begin(e), begin(e) + n) and Hessian slots [hessian_begin(e), hessian_begin(e) + n B): its
+// n / B diagonal B x B blocks, each column-major, block after block (for B = n, the n x n
+// Hessian column-major). hessian_slot(B, column, row) gives the place of an entry of a block
+// within the element's slots.
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/parallel_reduce.h>
-
-#include <Eigen/Core>
-#include <array>
-#include <atomic>
-#include <cmath>
 #include <cstdint>
-#include <functional>
 #include <string>
-#include <vector>
 
-#include "optim/element_energy.h"
 #include "optim/hessian_projection.h"
+#include "optim/types.h"
 
 namespace sa {
 
@@ -34,6 +27,35 @@ namespace sa {
 inline std::int64_t hessian_slot(int B, int column, int row) {
     return std::int64_t(column / B) * B * B + std::int64_t(column % B) * B + row % B;
 }
+
+/// Where a term's elements keep their variable indices and slots: arrays owned by the term,
+/// valid while it lives.
+struct TermLayout {
+    Index num_elements = 0;
+    /// Every element's variable indices, element after element.
+    const Index* variables = nullptr;
+    /// Run-time arity: element e's are variables[offsets[e] .. offsets[e + 1]) (num_elements + 1
+    /// entries). Null for a fixed arity: element e's begin at e * arity.
+    const std::int64_t* offsets = nullptr;
+    /// Run-time arity with dense element Hessians: element e's Hessian slots begin at
+    /// hessian_offsets[e] (num_elements + 1 entries). Null otherwise: at begin(e) * block.
+    const std::int64_t* hessian_offsets = nullptr;
+    /// The arity of every element (fixed), or the largest (run-time).
+    int arity = 0;
+    /// B of the Hessian blocks, or 0 when each element's Hessian is one block of its arity.
+    int block = 0;
+
+    std::int64_t begin(Index e) const { return offsets ? offsets[e] : std::int64_t(e) * arity; }
+    int arity_of(Index e) const { return offsets ? int(offsets[e + 1] - offsets[e]) : arity; }
+    int block_of(Index e) const { return block > 0 ? block : arity_of(e); }
+    std::int64_t hessian_begin(Index e) const {
+        return hessian_offsets ? hessian_offsets[e] : begin(e) * block;
+    }
+    /// The variable indices of all elements: the gradient slots a term needs.
+    std::int64_t num_entries() const { return begin(num_elements); }
+    /// The Hessian slots a term needs.
+    std::int64_t num_hessian_slots() const { return hessian_begin(num_elements); }
+};
 
 class Term {
   public:
@@ -47,19 +69,18 @@ class Term {
     /// Throws InvalidArgumentError unless `weight` is finite and >= 0.
     void set_weight(double weight);
 
-    virtual int arity() const = 0;
-    virtual Index num_elements() const = 0;
-    /// The `arity()` variable indices of element `e`.
-    const Index* element_variables(Index e) const { return all_element_variables() + e * arity(); }
-    /// The variable indices of every element, num_elements() x arity(), element after element.
-    virtual const Index* all_element_variables() const = 0;
+    virtual TermLayout layout() const = 0;
+    Index num_elements() const { return layout().num_elements; }
+    /// The number of variables element e names, and their indices.
+    int element_arity(Index e) const { return layout().arity_of(e); }
+    const Index* element_variables(Index e) const {
+        const TermLayout l = layout();
+        return l.variables + l.begin(e);
+    }
     virtual bool is_quadratic() const = 0;
     /// Positive semidefinite Hessian everywhere: never projected (element_energy.h).
     virtual bool is_convex() const = 0;
     virtual bool has_max_step() const = 0;
-    /// B: only the element Hessian's diagonal B x B blocks are assembled (element_energy.h's
-    /// hessian_block; the arity for a dense element).
-    virtual int hessian_block() const = 0;
 
     /// Unweighted sum of the element values at `x`; +inf as soon as one element is infeasible.
     /// The sum is formed in the same order for any number of threads.
@@ -84,176 +105,6 @@ class Term {
   private:
     std::string name_;
     double weight_;
-};
-
-template <ElementEnergy E>
-class EnergyTerm final : public Term {
-  public:
-    static constexpr int N = E::arity;
-    static constexpr int B = hessian_block_of<E>();
-    using Element = std::array<Index, N>;
-
-    EnergyTerm(std::string name, E energy, std::vector<Element> elements, double weight)
-        : Term(std::move(name), weight),
-          energy_(std::move(energy)),
-          elements_(std::move(elements)) {}
-
-    const E& energy() const { return energy_; }
-    const std::vector<Element>& elements() const { return elements_; }
-
-    int arity() const override { return N; }
-    Index num_elements() const override { return static_cast<Index>(elements_.size()); }
-    const Index* all_element_variables() const override {
-        static_assert(sizeof(Element) == N * sizeof(Index), "elements are stored back to back");
-        return elements_.empty() ? nullptr : elements_.front().data();
-    }
-    bool is_quadratic() const override { return is_quadratic_energy<E>(); }
-    bool is_convex() const override { return is_convex_energy<E>(); }
-    bool has_max_step() const override { return HasMaxStep<E>; }
-    int hessian_block() const override { return hessian_block_of<E>(); }
-
-    double value(const Eigen::VectorXd& x) const override {
-        std::atomic<bool> infeasible{false};
-        const double sum = tbb::parallel_deterministic_reduce(
-            range(), 0.0,
-            [&](const tbb::blocked_range<Index>& r, double acc) {
-                if (infeasible.load(std::memory_order_relaxed)) return kInfinity;
-                for (Index e = r.begin(); e != r.end(); ++e) {
-                    const double v = energy_.value(e, gather(x, e));
-                    if (!(v < kInfinity)) {
-                        if (v == kInfinity) infeasible.store(true, std::memory_order_relaxed);
-                        return v;
-                    }
-                    acc += v;
-                }
-                return acc;
-            },
-            std::plus<double>());
-        return infeasible.load() ? kInfinity : sum;
-    }
-
-    double evaluate(const Eigen::VectorXd& x, double scale, double* gradient_slots,
-                    double* hessian_slots) const override {
-        return tbb::parallel_deterministic_reduce(
-            range(), 0.0,
-            [&](const tbb::blocked_range<Index>& r, double acc) {
-                Vec<N> g;
-                Mat<N> h;
-                for (Index e = r.begin(); e != r.end(); ++e) {
-                    const Vec<N> xe = gather(x, e);
-                    double v;
-                    if constexpr (HasValueGradient<E>) {
-                        v = hessian_slots == nullptr ? energy_.value_gradient(e, xe, g)
-                                                     : energy_.value_gradient_hessian(e, xe, g, h);
-                    } else {
-                        v = energy_.value_gradient_hessian(e, xe, g, h);
-                    }
-                    acc += v;
-                    Eigen::Map<Vec<N>>(gradient_slots + std::size_t(e) * N) = scale * g;
-                    if (hessian_slots != nullptr) store_blocks(h, scale, hessian_slots, e);
-                }
-                return acc;
-            },
-            std::plus<double>());
-    }
-
-    Index project(const Eigen::VectorXd& x, double* hessian_slots, ProjectionMode mode,
-                  double epsilon) const override {
-        // A convex energy's blocks are positive semidefinite already: the Hessian assembler never
-        // projects them, and no eigen-solver of their arity need be compiled.
-        if constexpr (is_convex_energy<E>()) {
-            return 0;
-        } else {
-            return project_elements(x, hessian_slots, mode, epsilon);
-        }
-    }
-
-    double max_step(const Eigen::VectorXd& x, const Eigen::VectorXd& dx) const override {
-        if constexpr (!HasMaxStep<E>) {
-            return kInfinity;
-        } else {
-            return tbb::parallel_reduce(
-                range(), kInfinity,
-                [&](const tbb::blocked_range<Index>& r, double smallest) {
-                    for (Index e = r.begin(); e != r.end(); ++e) {
-                        smallest = std::min(
-                            smallest, double(energy_.max_step(e, gather(x, e), gather(dx, e))));
-                    }
-                    return smallest;
-                },
-                [](double a, double b) { return std::min(a, b); });
-        }
-    }
-
-    double element_value(Index e, const Eigen::VectorXd& x) const override {
-        return energy_.value(e, gather(x, e));
-    }
-
-  private:
-    Index project_elements(const Eigen::VectorXd& x, double* hessian_slots, ProjectionMode mode,
-                           double epsilon) const {
-        if (mode == ProjectionMode::kNone) return 0;
-        return tbb::parallel_deterministic_reduce(
-            range(), Index{0},
-            [&](const tbb::blocked_range<Index>& r, Index changed) {
-                for (Index e = r.begin(); e != r.end(); ++e) {
-                    bool did = false;
-                    if constexpr (B == N) {
-                        Eigen::Map<Mat<N>> slot(hessian_slots + std::size_t(e) * N * N);
-                        Mat<N> h = slot;
-                        if constexpr (HasOwnProjection<E>) {
-                            did = energy_.project_hessian(e, gather(x, e), h, mode, epsilon);
-                        } else {
-                            did = project_hessian_block<N>(h, mode, epsilon);
-                        }
-                        if (did) slot = h;
-                    } else if constexpr (HasOwnProjection<E>) {
-                        Mat<N> h = Mat<N>::Zero();
-                        for (int k = 0; k < N / B; ++k)
-                            h.template block<B, B>(B * k, B * k) = block_slot(hessian_slots, e, k);
-                        did = energy_.project_hessian(e, gather(x, e), h, mode, epsilon);
-                        if (did) store_blocks(h, 1.0, hessian_slots, e);
-                    } else {
-                        for (int k = 0; k < N / B; ++k) {
-                            Mat<B> h = block_slot(hessian_slots, e, k);
-                            if (project_hessian_block<B>(h, mode, epsilon)) {
-                                block_slot(hessian_slots, e, k) = h;
-                                did = true;
-                            }
-                        }
-                    }
-                    changed += did;
-                }
-                return changed;
-            },
-            std::plus<Index>());
-    }
-
-    /// Block k of element e's Hessian slots.
-    static Eigen::Map<Mat<B>> block_slot(double* hessian_slots, Index e, int k) {
-        return Eigen::Map<Mat<B>>(hessian_slots + std::size_t(e) * N * B + std::size_t(k) * B * B);
-    }
-    /// scale times the diagonal blocks of h into element e's slots.
-    static void store_blocks(const Mat<N>& h, double scale, double* hessian_slots, Index e) {
-        if constexpr (B == N) {
-            Eigen::Map<Mat<N>>(hessian_slots + std::size_t(e) * N * N) = scale * h;
-        } else {
-            for (int k = 0; k < N / B; ++k)
-                block_slot(hessian_slots, e, k) = scale * h.template block<B, B>(B * k, B * k);
-        }
-    }
-    tbb::blocked_range<Index> range() const {
-        return tbb::blocked_range<Index>(0, num_elements(), kGrain);
-    }
-    Vec<N> gather(const Eigen::VectorXd& x, Index e) const {
-        Vec<N> xe;
-        const Element& vars = elements_[e];
-        for (int k = 0; k < N; ++k) xe[k] = x[vars[k]];
-        return xe;
-    }
-
-    E energy_;
-    std::vector<Element> elements_;
 };
 
 }  // namespace sa

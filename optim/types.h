@@ -18,6 +18,13 @@ using Vec = Eigen::Matrix<double, N, 1>;
 template <int N>
 using Mat = Eigen::Matrix<double, N, N>;
 
+/// Views of dynamic-size vectors and matrices, which bind to Eigen::VectorXd, Eigen::MatrixXd
+/// and Eigen::Map's of raw memory alike: an element of run-time arity (dynamic_element_energy.h)
+/// sees its variables, gradient and Hessian through them.
+using ConstVectorRef = Eigen::Ref<const Eigen::VectorXd>;
+using VectorRef = Eigen::Ref<Eigen::VectorXd>;
+using MatrixRef = Eigen::Ref<Eigen::MatrixXd>;
+
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 }  // namespace sa

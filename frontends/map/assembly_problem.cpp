@@ -121,42 +121,21 @@ void AssemblyProblem<D>::add_energies_and_constraints(const AssemblyInput<D>& in
 template <int D>
 void AssemblyProblem<D>::add_boundary_angle_terms(const AssemblyInput<D>& in) {
     if constexpr (D == 2) {
+        // E_theta on the linear parts of each fan's triangles: one term for fans of any size.
+        BoundaryAngleEnergy energy;
+        RaggedElements elements;
         for (const BoundaryFan& fan : in.fans) {
-            if (fan.triangles.size() > std::size_t(kMaxFan)) {
-                throw InvalidArgumentError("boundary vertex " + std::to_string(fan.vertex) +
-                                           " has " + std::to_string(fan.triangles.size()) +
-                                           " triangles; the boundary-angle "
-                                           "barrier (--free-boundary-injective) handles at most " +
-                                           std::to_string(kMaxFan));
+            std::vector<Mat<2>>& edges = energy.edges.emplace_back();
+            std::vector<Index> element;
+            for (std::size_t t = 0; t < fan.triangles.size(); ++t) {
+                edges.push_back(fan_edges(*in.mesh, *in.frames, fan, int(t)));
+                const auto a = engine_->linear_variables(fan.triangles[t]);
+                element.insert(element.end(), a.begin(), a.end());
             }
+            elements.push_back(element);
         }
-        // One term per fan size K: E_theta on the linear parts of the fan's triangles.
-        [&]<int... k>(std::integer_sequence<int, k...>) {
-            (
-                [&] {
-                    constexpr int K = k + 1;
-                    BoundaryAngleEnergy<K> energy;
-                    std::vector<std::array<Index, 4 * K>> elements;
-                    for (const BoundaryFan& fan : in.fans) {
-                        if (int(fan.triangles.size()) != K) continue;
-                        std::array<Mat<2>, K> edges;
-                        std::array<Index, 4 * K> element;
-                        for (int t = 0; t < K; ++t) {
-                            edges[t] = fan_edges(*in.mesh, *in.frames, fan, t);
-                            const auto a = engine_->linear_variables(fan.triangles[t]);
-                            std::copy(a.begin(), a.end(), element.begin() + 4 * t);
-                        }
-                        energy.edges.push_back(edges);
-                        elements.push_back(element);
-                    }
-                    if (!elements.empty()) {
-                        engine_->add_barrier("boundary angle " + std::to_string(K),
-                                             std::move(energy), std::move(elements));
-                    }
-                }(),
-                ...);
-        }
-        (std::make_integer_sequence<int, kMaxFan>{});
+        if (!elements.empty())
+            engine_->add_barrier("boundary angle", std::move(energy), std::move(elements));
     }
 }
 

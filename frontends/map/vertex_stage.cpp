@@ -66,33 +66,21 @@ VertexStage run_once(const SimplicialMesh& mesh, const RestFrames<D>& frames,
     for (const auto& energy : energies) energy->add_to(engine, moving);
     if constexpr (D == 2) {
         // E_theta on the positions of each boundary vertex and its fan neighbours.
-        [&]<int... k>(std::integer_sequence<int, k...>) {
-            (
-                [&] {
-                    constexpr int K = k + 1;
-                    std::vector<std::array<Index, 2 * K + 4>> angle_elements;
-                    for (const BoundaryFan& fan : terms.fans) {
-                        if (int(fan.triangles.size()) != K) continue;
-                        std::array<Index, 2 * K + 4> e;
-                        const auto center = engine.vertex_variables(fan.vertex);
-                        e[0] = center[0];
-                        e[1] = center[1];
-                        for (int m = 0; m <= K; ++m) {
-                            const auto neighbour = engine.vertex_variables(fan.neighbours[m]);
-                            e[2 + 2 * m] = neighbour[0];
-                            e[3 + 2 * m] = neighbour[1];
-                        }
-                        angle_elements.push_back(e);
-                    }
-                    if (!angle_elements.empty()) {
-                        engine.add_barrier("boundary angle " + std::to_string(K),
-                                           BoundaryAngleVertexEnergy<K>{},
-                                           std::move(angle_elements));
-                    }
-                }(),
-                ...);
+        RaggedElements angle_elements;
+        for (const BoundaryFan& fan : terms.fans) {
+            std::vector<Index> e;
+            const auto center = engine.vertex_variables(fan.vertex);
+            e.insert(e.end(), center.begin(), center.end());
+            for (const Index neighbour : fan.neighbours) {
+                const auto p = engine.vertex_variables(neighbour);
+                e.insert(e.end(), p.begin(), p.end());
+            }
+            angle_elements.push_back(e);
         }
-        (std::make_integer_sequence<int, kMaxFan>{});
+        if (!angle_elements.empty()) {
+            engine.add_barrier("boundary angle", BoundaryAngleVertexEnergy{},
+                               std::move(angle_elements));
+        }
     }
     if (!terms.constraints.empty()) {
         // n . (x_b - x_a) = value on the two vertices' positions.

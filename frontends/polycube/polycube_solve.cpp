@@ -49,42 +49,31 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
         engine.add_linear_part_constraints<2>("polycube planarity", rows);
         add_plane_offsets(engine, stage);
 
-        // The angle barriers in A-form: vec(A_t) of each tetrahedron of the fan or star.
-        auto a_form = [&](const char* name) {
-            return [&engine, name, this](auto energy, auto tets) {
-                constexpr int K = std::tuple_size_v<typename decltype(tets)::value_type>;
-                std::vector<std::array<Index, 9 * K>> elements;
-                elements.reserve(tets.size());
-                for (const auto& fan : tets) {
-                    std::array<Index, 9 * K> e;
-                    for (int k = 0; k < K; ++k) {
-                        const auto linear = engine.linear_variables(fan[k]);
-                        std::copy(linear.begin(), linear.end(), e.begin() + 9 * k);
-                    }
-                    elements.push_back(e);
+        // The angle barriers in A-form: vec(A_t) of each tetrahedron of the fan or star, on
+        // every boundary edge and vertex.
+        auto add = [&](const char* name, const char* where, auto barrier) {
+            RaggedElements elements;
+            int largest = 0;
+            for (Index e = 0; e < barrier.items.size(); ++e) {
+                std::vector<Index> variables;
+                for (const Index t : barrier.items[e]) {
+                    const auto linear = engine.linear_variables(t);
+                    variables.insert(variables.end(), linear.begin(), linear.end());
                 }
-                engine.add_barrier(std::string(name) + " " + std::to_string(K), std::move(energy),
-                                   std::move(elements), weight_);
-            };
+                elements.push_back(variables);
+                largest = std::max(largest, barrier.items.arity(e));
+            }
+            const Index count = elements.size();
+            if (count > 0)
+                engine.add_barrier(name, std::move(barrier.energy), std::move(elements), weight_);
+            return std::to_string(count) + " boundary " + where + " (up to " +
+                   std::to_string(largest) + " tetrahedra)";
         };
-        auto none = [](auto, auto) {};
-        for_each_dihedral_term(p_, a_form("dihedral-angle sums, A-form"), none);
-        for_each_solid_angle_term(p_, a_form("solid-angle sums, A-form"), none);
-        // The A-forms leave out fans and stars of more than kMaxAngleFan tetrahedra (fixed-size
-        // elements); energy() still measures their sums, at every hand-over test.
-        auto a_form_left = [](const auto& items) {
-            return std::count_if(items.begin(), items.end(), [](const auto& item) {
-                return item.tets.size() > std::size_t(kMaxAngleFan);
-            });
-        };
-        log_line(
-            options_.logger,
-            "polycube: angle barriers on " + std::to_string(p_.fans.size() - a_form_left(p_.fans)) +
-                " of " + std::to_string(p_.fans.size()) + " boundary edges and " +
-                std::to_string(p_.stars.size() - a_form_left(p_.stars)) + " of " +
-                std::to_string(p_.stars.size()) + " boundary vertices (the others have more than " +
-                std::to_string(kMaxAngleFan) +
-                " tetrahedra; their sums are checked at the hand-over and verified)");
+        const std::string edges =
+            add("dihedral-angle sums, A-form", "edges", dihedral_sum_elements(p_));
+        const std::string vertices =
+            add("solid-angle sums, A-form", "vertices", solid_angle_sum_elements(p_));
+        log_line(options_.logger, "polycube: angle barriers on " + edges + " and " + vertices);
     }
 
     bool project(Eigen::MatrixXd& positions, const PluginStage<3>& stage) const override {

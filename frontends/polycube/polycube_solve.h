@@ -15,8 +15,7 @@
 //          E~_assembly (the paper's 5.3; it needs the translations of f-SA): every other term is
 //          blind to the map's scale, and E~ falls as the map shrinks (polycube_solve.cpp);
 //        - the 3D boundary-angle barriers E_e = 1 / (2 pi - theta_e) and E_v = 1 / (4 pi - theta_v)
-//          in A-form (energies/tet_angle_barriers.h; stars of more than kMaxAngleFan tetrahedra
-//          only in the vertex stage);
+//          in A-form, on every boundary edge and vertex (energies/tet_angle_barriers.h);
 //      and, in the vertex stage, the sliding boundary: the vertices of each plane (the charts of
 //      one axis that share vertices) are projected onto their mean coordinate, which becomes one
 //      variable shared by all of them (AssemblyPlugin::shared_coordinates): a chart vertex

@@ -196,6 +196,9 @@ class SimplexAssemblyEngine {
     template <ElementEnergy E>
     TermId add_barrier(std::string name, E energy,
                        std::vector<std::array<Index, E::arity>> elements, double weight = 1.0);
+    /// The same for an energy of run-time arity (fans, rings, stars of any size).
+    template <DynamicElementEnergy E>
+    TermId add_barrier(std::string name, E energy, RaggedElements elements, double weight = 1.0);
     /// Kind 2: an assembly term (quadratic), weighted by lambda.
     template <ElementEnergy E>
     TermId add_assembly_term(std::string name, E energy,
@@ -282,6 +285,16 @@ template <int D>
 template <ElementEnergy E>
 TermId SimplexAssemblyEngine<D>::add_barrier(std::string name, E energy,
                                              std::vector<std::array<Index, E::arity>> elements,
+                                             double weight) {
+    const TermId id =
+        problem_.add_term(std::move(name), std::move(energy), std::move(elements), weight);
+    barrier_terms_.push_back(id);
+    return id;
+}
+
+template <int D>
+template <DynamicElementEnergy E>
+TermId SimplexAssemblyEngine<D>::add_barrier(std::string name, E energy, RaggedElements elements,
                                              double weight) {
     const TermId id =
         problem_.add_term(std::move(name), std::move(energy), std::move(elements), weight);

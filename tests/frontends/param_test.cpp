@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <filesystem>
@@ -51,25 +52,33 @@ ParameterizationOptions conformal_options() {
     return options;
 }
 
+// The axis vertex of helicoid(12, 6) has a fan of 12 triangles, of helicoid(20, 6) 20: the
+// barrier takes fans of any size.
 TEST(Parameterization, BoundaryBarrierKeepsBoundaryAngleSumsBelow2Pi) {
-    const SimplicialMesh mesh = helicoid(12, 6);
-    ParameterizationOptions plain = conformal_options();
-    const ParameterizationResult folded =
-        parameterize(mesh, "helicoid", nullptr, InitialMap::kLscm, plain);
-    EXPECT_EQ(folded.solve.verification.inverted, 0) << folded.message;
-    EXPECT_GE(folded.boundary_violations_after, 1)
-        << "the case should fold at its boundary without the barrier";
+    for (const int fan : {12, 20}) {
+        const SimplicialMesh mesh = helicoid(fan, 6);
+        ParameterizationOptions plain = conformal_options();
+        const ParameterizationResult folded =
+            parameterize(mesh, "helicoid", nullptr, InitialMap::kLscm, plain);
+        EXPECT_EQ(folded.solve.verification.inverted, 0) << folded.message;
+        EXPECT_GE(folded.boundary_violations_after, 1)
+            << "the case should fold at its boundary without the barrier";
 
-    ParameterizationOptions injective = conformal_options();
-    injective.free_boundary_injective = true;
-    const ParameterizationResult r =
-        parameterize(mesh, "helicoid", nullptr, InitialMap::kLscm, injective);
-    EXPECT_TRUE(r.success) << r.message;
-    EXPECT_EQ(r.solve.verification.inverted, 0);
-    EXPECT_EQ(r.boundary_violations_after, 0) << r.message;
-    const MeshTopology t = mesh_topology(mesh, "helicoid");
-    for (double theta : boundary_angle_sums(boundary_fans(mesh, t), r.uv))
-        EXPECT_LT(theta, 2.0 * M_PI);
+        ParameterizationOptions injective = conformal_options();
+        injective.free_boundary_injective = true;
+        const ParameterizationResult r =
+            parameterize(mesh, "helicoid", nullptr, InitialMap::kLscm, injective);
+        EXPECT_TRUE(r.success) << fan << ": " << r.message;
+        EXPECT_EQ(r.solve.verification.inverted, 0);
+        EXPECT_EQ(r.boundary_violations_after, 0) << r.message;
+        const MeshTopology t = mesh_topology(mesh, "helicoid");
+        const std::vector<BoundaryFan> fans = boundary_fans(mesh, t);
+        const auto axis = std::find_if(fans.begin(), fans.end(),
+                                       [](const BoundaryFan& f) { return f.vertex == 0; });
+        ASSERT_NE(axis, fans.end());
+        EXPECT_EQ(axis->triangles.size(), std::size_t(fan));
+        for (double theta : boundary_angle_sums(fans, r.uv)) EXPECT_LT(theta, 2.0 * M_PI);
+    }
 }
 
 TEST(Parameterization, VerticesOfNoTriangleAreLeftOutOfTheMap) {

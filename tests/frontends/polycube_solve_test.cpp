@@ -5,7 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <atomic>
+#include <string>
+#include <vector>
 
 #include "../geometry/polycube_fixtures.h"
 #include "geometry/cube_cover.h"
@@ -175,15 +178,30 @@ TEST(PolycubeSolve, SolveFromTheCubeCoverIsVerifiedWithAndWithoutTheOptimalBound
     EXPECT_THROW(solve_polycube(prepared, both), InvalidArgumentError);
 }
 
-// A box whose top and bottom centres have 48 neighbours each, more than the angle barriers'
-// fixed-size elements take: the solve leaves them out of its terms, and the map is verified
-// (the angle sums measured at every vertex).
+// A box whose top and bottom centres are in many tetrahedra (48 before the splits): every
+// boundary vertex and edge has its angle barrier (the log counts them and their largest stars),
+// and the map is verified (the angle sums measured at every vertex).
 TEST(PolycubeSolve, VerticesWithManyNeighboursAreSolved) {
     const PreparedPolycube prepared = prepared_shape(testing::fan_box(12));
     ASSERT_EQ(prepared.charts.size(), 6);
-    const PolycubeSolve solve = solve_polycube(prepared, {});
+    std::vector<std::string> lines;
+    const PolycubeSolve solve =
+        solve_polycube(prepared, {}, [&](const std::string& line) { lines.push_back(line); });
     ASSERT_TRUE(solve.success) << solve.message;
     EXPECT_EQ(solve.verification.vertex_angle_violations, 0);
+    const std::string expected = "polycube: angle barriers on " +
+                                 std::to_string(prepared.fans.size()) + " boundary edges (up to ";
+    std::size_t largest = 0;
+    for (const BoundaryVertexStar& star : prepared.stars)
+        largest = std::max(largest, star.tets.size());
+    EXPECT_GT(largest, 14u);
+    const std::string vertices = " and " + std::to_string(prepared.stars.size()) +
+                                 " boundary vertices (up to " + std::to_string(largest) +
+                                 " tetrahedra)";
+    const auto line = std::find_if(lines.begin(), lines.end(),
+                                   [&](const std::string& l) { return l.rfind(expected, 0) == 0; });
+    ASSERT_NE(line, lines.end());
+    EXPECT_NE(line->find(vertices), std::string::npos) << *line;
 }
 
 /// The stage in which the driver calls the plugin's projection with the mesh at hand.

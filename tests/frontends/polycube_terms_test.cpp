@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 #include <map>
+#include <span>
 
 #include "../geometry/polycube_fixtures.h"
 #include "frontends/polycube/boundary_angle_sums.h"
@@ -12,19 +13,18 @@
 namespace sa {
 namespace {
 
-template <int N>
-Vec<N> repeated(const Mat<3>& A) {
-    Vec<N> x;
-    for (int k = 0; k < N / 9; ++k)
-        x.template segment<9>(9 * k) = Eigen::Map<const Vec<9>>(A.data());
+/// vec(A) once per tetrahedron of an A-form element of `count` tetrahedra.
+Eigen::VectorXd repeated(const Mat<3>& A, int count) {
+    Eigen::VectorXd x(9 * count);
+    for (int k = 0; k < count; ++k) x.segment<9>(9 * k) = Eigen::Map<const Vec<9>>(A.data());
     return x;
 }
 
-template <int N>
-Vec<N> gathered(const Eigen::MatrixXd& positions, const std::array<Index, N / 3>& vertices) {
-    Vec<N> x;
-    for (int i = 0; i < N / 3; ++i)
-        x.template segment<3>(3 * i) = positions.row(vertices[i]).transpose();
+/// The positions of a vertex-form element's vertices, one after the other.
+Eigen::VectorXd gathered(const Eigen::MatrixXd& positions, std::span<const Index> vertices) {
+    Eigen::VectorXd x(3 * vertices.size());
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+        x.segment<3>(3 * Eigen::Index(i)) = positions.row(vertices[i]).transpose();
     return x;
 }
 
@@ -44,11 +44,11 @@ TEST_F(PolycubeTerms, PlanarityVanishesOnThePolycubeAndNotWhenTurned) {
     const Mat<3> turned = Eigen::AngleAxisd(0.2, Vec<3>(1, 1, 1).normalized()).toRotationMatrix();
     for (Index e = 0; e < p.boundary.size(); ++e) {
         EXPECT_EQ(a.tet[e], p.boundary.tet(e));
-        EXPECT_LT(energy.value(e, repeated<9>(Mat<3>::Identity())), 1e-30);
-        EXPECT_GT(energy.value(e, repeated<9>(turned)), 1e-4);
-        EXPECT_LT(vertex_energy.value(e, gathered<9>(p.mesh.vertices, v.vertices[e])), 1e-30);
+        EXPECT_LT(energy.value(e, Vec<9>(repeated(Mat<3>::Identity(), 1))), 1e-30);
+        EXPECT_GT(energy.value(e, Vec<9>(repeated(turned, 1))), 1e-4);
+        EXPECT_LT(vertex_energy.value(e, Vec<9>(gathered(p.mesh.vertices, v.vertices[e]))), 1e-30);
         Eigen::MatrixXd rotated = p.mesh.vertices * turned.transpose();
-        EXPECT_GT(vertex_energy.value(e, gathered<9>(rotated, v.vertices[e])), 1e-4);
+        EXPECT_GT(vertex_energy.value(e, Vec<9>(gathered(rotated, v.vertices[e]))), 1e-4);
     }
 }
 
@@ -88,106 +88,67 @@ TEST_F(PolycubeTerms, AngleBarriersAtRestAgreeAcrossForms) {
     for (std::size_t f = 0; f < p.fans.size(); ++f) {
         expected[p.fans[f].edge] = 1.0 / (2 * M_PI - edge_sums[f]);
     }
-    std::size_t a_elements = 0, v_elements = 0;
-    for_each_dihedral_term(
-        p,
-        [&](auto energy, auto tets) {
-            constexpr int K = decltype(energy)::arity / 9;
-            // Elements come in the order of the fans of K tetrahedra.
-            std::size_t e = 0;
-            for (const BoundaryEdgeFan& fan : p.fans) {
-                if (int(fan.tets.size()) != K) continue;
-                ASSERT_LT(e, tets.size());
-                EXPECT_EQ(tets[e][0], fan.tets[0]);
-                EXPECT_NEAR(energy.value(Index(e), repeated<9 * K>(Mat<3>::Identity())),
-                            expected[fan.edge], 1e-12);
-                ++e;
-            }
-            EXPECT_EQ(e, tets.size());
-            a_elements += tets.size();
-        },
-        [&](auto energy, auto vertices) {
-            constexpr int N = decltype(energy)::arity;
-            for (std::size_t e = 0; e < vertices.size(); ++e) {
-                const std::array<Index, 2> edge{vertices[e][0], vertices[e][1]};
-                EXPECT_NEAR(energy.value(Index(e), gathered<N>(p.mesh.vertices, vertices[e])),
-                            expected[edge], 1e-12);
-            }
-            v_elements += vertices.size();
-        });
-    EXPECT_EQ(a_elements, p.fans.size());
-    EXPECT_EQ(v_elements, p.fans.size());
+    // One element per boundary edge, in the order of the fans, in either form.
+    const auto a_form = dihedral_sum_elements(p);
+    const auto vertex_form = dihedral_sum_vertex_elements(p);
+    ASSERT_EQ(a_form.items.size(), Index(p.fans.size()));
+    ASSERT_EQ(vertex_form.items.size(), Index(p.fans.size()));
+    for (std::size_t f = 0; f < p.fans.size(); ++f) {
+        const Index e = Index(f);
+        EXPECT_EQ(a_form.items[e][0], p.fans[f].tets[0]);
+        EXPECT_NEAR(
+            a_form.energy.value(e, repeated(Mat<3>::Identity(), int(p.fans[f].tets.size()))),
+            expected[p.fans[f].edge], 1e-12);
+        const std::span<const Index> vertices = vertex_form.items[e];
+        const double at_edge = expected[{vertices[0], vertices[1]}];
+        EXPECT_NEAR(vertex_form.energy.value(e, gathered(p.mesh.vertices, vertices)), at_edge,
+                    1e-12);
+    }
 
     const std::vector<double> vertex_sums = solid_angle_sums(p.stars, p.mesh.vertices);
-    std::map<Index, double> expected_v;
+    const auto star_a_form = solid_angle_sum_elements(p);
+    const auto star_vertex_form = solid_angle_sum_vertex_elements(p);
+    ASSERT_EQ(star_a_form.items.size(), Index(p.stars.size()));
+    ASSERT_EQ(star_vertex_form.items.size(), Index(p.stars.size()));
     for (std::size_t s = 0; s < p.stars.size(); ++s) {
-        expected_v[p.stars[s].vertex] = 1.0 / (4 * M_PI - vertex_sums[s]);
+        const Index e = Index(s);
+        const double expected_v = 1.0 / (4 * M_PI - vertex_sums[s]);
+        EXPECT_EQ(star_a_form.items[e][0], p.stars[s].tets[0]);
+        EXPECT_NEAR(
+            star_a_form.energy.value(e, repeated(Mat<3>::Identity(), int(p.stars[s].tets.size()))),
+            expected_v, 1e-12);
+        EXPECT_EQ(star_vertex_form.items[e][0], p.stars[s].vertex);
+        EXPECT_NEAR(
+            star_vertex_form.energy.value(e, gathered(p.mesh.vertices, star_vertex_form.items[e])),
+            expected_v, 1e-12);
     }
-    std::vector<Index> skipped;
-    a_elements = v_elements = 0;
-    for_each_solid_angle_term(
-        p,
-        [&](auto energy, auto tets) {
-            constexpr int K = decltype(energy)::arity / 9;
-            std::size_t e = 0;
-            for (const BoundaryVertexStar& star : p.stars) {
-                if (int(star.tets.size()) != K) continue;
-                ASSERT_LT(e, tets.size());
-                EXPECT_EQ(tets[e][0], star.tets[0]);
-                EXPECT_NEAR(energy.value(Index(e), repeated<9 * K>(Mat<3>::Identity())),
-                            expected_v[star.vertex], 1e-12);
-                ++e;
-            }
-            EXPECT_EQ(e, tets.size());
-            a_elements += tets.size();
-        },
-        [&](auto energy, auto vertices) {
-            constexpr int N = decltype(energy)::arity;
-            for (std::size_t e = 0; e < vertices.size(); ++e) {
-                EXPECT_NEAR(energy.value(Index(e), gathered<N>(p.mesh.vertices, vertices[e])),
-                            expected_v[vertices[e][0]], 1e-12);
-            }
-            v_elements += vertices.size();
-        },
-        &skipped);
-    EXPECT_EQ(v_elements, p.stars.size());
-    EXPECT_EQ(a_elements + skipped.size(), p.stars.size());
 }
 
-// A boundary vertex with more neighbours than the vertex form takes (kMaxAngleRing) is left out
-// of both forms and named, not refused: the angle sums still measure it.
-TEST(PolycubeTermsLimits, StarsBeyondTheFixedSizesAreLeftOutAndNamed) {
+// Every boundary vertex has its barrier, however many tetrahedra surround it: each centre of a
+// fan box is in 48 tetrahedra with 49 neighbours, its solid angles summing to 2 pi (flat, inside
+// a face).
+TEST(PolycubeTermsSizes, StarsOfManyTetrahedraHaveTheirBarriers) {
     const PreparedPolycube p =
         prepare_polycube(testing::fan_box(12), "fan box", PolycubeLabelInput{});
-    std::vector<Index> large;
-    for (const BoundaryVertexStar& star : p.stars) {
-        if (star.ring.size() > std::size_t(kMaxAngleRing)) large.push_back(star.vertex);
-    }
-    ASSERT_EQ(large, (std::vector<Index>{0, 1}));  // the two centres
-    std::vector<Index> skipped;
-    std::size_t a_elements = 0, v_elements = 0;
-    for_each_solid_angle_term(
-        p, [&](auto, auto tets) { a_elements += tets.size(); },
-        [&](auto, auto vertices) {
-            for (const auto& ids : vertices) EXPECT_NE(ids[0], 0);
-            v_elements += vertices.size();
-        },
-        &skipped);
-    EXPECT_EQ(v_elements, p.stars.size() - 2);
-    EXPECT_EQ(a_elements + skipped.size(), p.stars.size());
-    EXPECT_NE(std::find(skipped.begin(), skipped.end(), 0), skipped.end());
-    EXPECT_NE(std::find(skipped.begin(), skipped.end(), 1), skipped.end());
+    const auto a_form = solid_angle_sum_elements(p);
+    const auto vertex_form = solid_angle_sum_vertex_elements(p);
+    ASSERT_EQ(a_form.items.size(), Index(p.stars.size()));
     const std::vector<double> sums = solid_angle_sums(p.stars, p.mesh.vertices);
+    int centres = 0;
     for (std::size_t s = 0; s < p.stars.size(); ++s) {
-        if (p.stars[s].vertex <= 1) {
-            EXPECT_NEAR(sums[s], 2 * M_PI, 1e-9);  // flat, inside a face
-        }
+        if (p.stars[s].vertex > 1) continue;
+        ++centres;
+        const Index e = Index(s);
+        const int tets = int(p.stars[s].tets.size());
+        EXPECT_GT(tets, 14);
+        EXPECT_GT(vertex_form.items.arity(e), 40);
+        EXPECT_NEAR(sums[s], 2 * M_PI, 1e-9);
+        EXPECT_NEAR(a_form.energy.value(e, repeated(Mat<3>::Identity(), tets)), 1.0 / (2 * M_PI),
+                    1e-12);
+        EXPECT_NEAR(vertex_form.energy.value(e, gathered(p.mesh.vertices, vertex_form.items[e])),
+                    1.0 / (2 * M_PI), 1e-12);
     }
-    skipped.clear();
-    std::size_t fans = 0;
-    for_each_dihedral_term(
-        p, [&](auto, auto tets) { fans += tets.size(); }, [](auto, auto) {}, &skipped);
-    EXPECT_EQ(fans + skipped.size(), p.fans.size());
+    EXPECT_EQ(centres, 2);
 }
 
 }  // namespace

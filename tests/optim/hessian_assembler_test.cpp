@@ -37,17 +37,19 @@ Eigen::MatrixXd dense_reference(const Problem& problem, const Eigen::VectorXd& x
     Eigen::MatrixXd H = Eigen::MatrixXd::Zero(n, n);
     for (TermId t = 0; t < problem.num_terms(); ++t) {
         const Term& term = problem.term(t);
-        const int N = term.arity(), B = term.hessian_block();
-        std::vector<double> g(std::size_t(term.num_elements()) * N);
-        std::vector<double> h(g.size() * B);
+        const TermLayout l = term.layout();
+        std::vector<double> g(std::size_t(l.num_entries()));
+        std::vector<double> h(std::size_t(l.num_hessian_slots()));
         term.evaluate(x, term.weight(), g.data(), h.data());
         if (!term.is_convex()) term.project(x, h.data(), ProjectionMode::kClamp, 1e-8);
-        for (Index e = 0; e < term.num_elements(); ++e) {
+        for (Index e = 0; e < l.num_elements; ++e) {
             const Index* vars = term.element_variables(e);
+            const int N = l.arity_of(e), B = l.block_of(e);
             for (int a = 0; a < N; ++a)
                 for (int b = 0; b < N; ++b)
                     if (a / B == b / B)
-                        H(vars[b], vars[a]) += h[std::size_t(e) * N * B + hessian_slot(B, a, b)];
+                        H(vars[b], vars[a]) +=
+                            h[std::size_t(l.hessian_begin(e) + hessian_slot(B, a, b))];
         }
     }
     return H;
@@ -117,7 +119,7 @@ TEST(HessianAssembler, KeepsOnlyTheDiagonalBlocksOfABlockedTerm) {
     for (int i = 0; i + 3 < n; i += 4) elements.push_back({i, i + 1, i + 2, i + 3});
     elements.push_back({0, 1, 6, 7});  // block (0, 1) with block (6, 7), coupled again
     problem.add_term("blocks", BlockCoupled{}, elements, 1.5);
-    EXPECT_EQ(problem.term(0).hessian_block(), 2);
+    EXPECT_EQ(problem.term(0).layout().block, 2);
 
     HessianAssembler assembler(problem);
     PhaseTimes times;

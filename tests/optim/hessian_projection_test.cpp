@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 #include <algorithm>
 #include <random>
 
@@ -70,7 +72,7 @@ TEST(HessianProjection, DiagonallyDominantBlockIsSkippedExactly) {
     Mat<4> h;
     h << 4, 1, -1, 0.5, 1, 5, 2, 1, -1, 2, 6, -2, 0.5, 1, -2, 7;
     const Mat<4> original = h;
-    EXPECT_TRUE(is_diagonally_dominant_above<4>(h, 1e-8));
+    EXPECT_TRUE(is_diagonally_dominant_above(h, 1e-8));
     EXPECT_FALSE(project_hessian_block<4>(h, ProjectionMode::kClamp, 1e-8));
     EXPECT_EQ(h, original);
 }
