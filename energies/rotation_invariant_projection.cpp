@@ -31,7 +31,7 @@ bool project_rotation_invariant_hessian(const Mat<D>& A, Mat<D * D>& h, Projecti
     }
     // Only the entries of the rotated Hessian B^T h B that the structure allows are read: the
     // D x D block of the diagonal directions and the 2 x 2 block of each off-diagonal pair.
-    const Mat<N> h_basis = h * basis;
+    const Mat<N> h_basis = h.lazyProduct(basis);  // Eigen's general product is slower here
     auto rotated = [&](int r, int c) { return basis.col(r).dot(h_basis.col(c)); };
 
     // The D x D block of the diagonal directions E_ii.
@@ -94,7 +94,7 @@ bool project_rotation_invariant_hessian(const Mat<D>& A, Mat<D * D>& h, Projecti
         basis_projected.col(p) = basis.col(p) * same + basis.col(q) * cross;
         basis_projected.col(q) = basis.col(q) * same + basis.col(p) * cross;
     }
-    h.noalias() = basis_projected * basis.transpose();
+    h = basis_projected.lazyProduct(basis.transpose());
     return true;
 }
 

@@ -33,15 +33,21 @@ class VertexSimplexEnergy {
     VertexSimplexEnergy(E energy, std::vector<Mat<D>> rest_edge_inverses)
         : energy_(std::move(energy)), rest_inverse_(std::move(rest_edge_inverses)) {}
 
-    double value(Index i, const Vec<arity>& x) const { return energy_.value(i, map(i) * x); }
+    double value(Index i, const Vec<arity>& x) const {
+        return energy_.value(i, linear_part(weights(i), x));
+    }
     double value_gradient_hessian(Index i, const Vec<arity>& x, Vec<arity>& g,
                                   Mat<arity>& h) const {
-        const Eigen::Matrix<double, kA, arity> L = map(i);
+        const Weights W = weights(i);
         Vec<kA> ga;
         Mat<kA> ha;
-        const double v = energy_.value_gradient_hessian(i, L * x, ga, ha);
-        g = L.transpose() * ga;
-        h = L.transpose() * ha * L;
+        const double v = energy_.value_gradient_hessian(i, linear_part(W, x), ga, ha);
+        for (int p = 0; p <= D; ++p) {
+            g.template segment<D>(D * p) = W(p, 0) * ga.template segment<D>(0);
+            for (int c = 1; c < D; ++c)
+                g.template segment<D>(D * p) += W(p, c) * ga.template segment<D>(D * c);
+        }
+        h = transformed(W, ha);
         return v;
     }
     /// Projects in A: the Hessian is L^T H_A L with L = map(i), and L^T P(H_A) L is positive
@@ -53,8 +59,8 @@ class VertexSimplexEnergy {
     /// eigenvalue projection of its D^2 x D^2 block (project_hessian_block()).
     bool project_hessian(Index i, const Vec<arity>& x, Mat<arity>& h, ProjectionMode mode,
                          double epsilon) const {
-        const Eigen::Matrix<double, kA, arity> L = map(i);
-        const Vec<kA> a = L * x;
+        const Weights W = weights(i);
+        const Vec<kA> a = linear_part(W, x);
         Vec<kA> ga;
         Mat<kA> ha;
         energy_.value_gradient_hessian(i, a, ga, ha);
@@ -65,24 +71,22 @@ class VertexSimplexEnergy {
             changed = project_hessian_block<kA>(ha, mode, epsilon);
         }
         if (!changed) return false;
-        h = L.transpose() * ha * L;
+        h = transformed(W, ha);
         return true;
     }
     double max_step(Index i, const Vec<arity>& x,
                     const Vec<arity>& dx) const requires HasMaxStep<E> {
-        const Eigen::Matrix<double, kA, arity> L = map(i);
-        return energy_.max_step(i, L * x, L * dx);
+        const Weights W = weights(i);
+        return energy_.max_step(i, linear_part(W, x), linear_part(W, dx));
     }
-    /// The linear map from the copies (x_0, ..., x_D) to vec(A_i).
+    /// The linear map L from the copies (x_0, ..., x_D) to vec(A_i): vec(A_i) = L x.
     Eigen::Matrix<double, kA, arity> map(Index i) const {
-        // vec(P R^-1) = (R^-T kron I) vec(P), vec(P) column c = x_{c+1} - x_0.
-        Eigen::Matrix<double, kA, arity> L = Eigen::Matrix<double, kA, arity>::Zero();
-        const Mat<D>& Rinv = rest_inverse_[i];
-        for (int c = 0; c < D; ++c) {  // column c of A = sum_k (x_{k+1} - x_0) Rinv(k, c)
-            for (int k = 0; k < D; ++k) {
-                L.template block<D, D>(D * c, D * (k + 1)) += Rinv(k, c) * Mat<D>::Identity();
-                L.template block<D, D>(D * c, 0) -= Rinv(k, c) * Mat<D>::Identity();
-            }
+        // vec(X W) = (W^T kron I) vec(X).
+        const Weights W = weights(i);
+        Eigen::Matrix<double, kA, arity> L;
+        for (int c = 0; c < D; ++c) {
+            for (int p = 0; p <= D; ++p)
+                L.template block<D, D>(D * c, D * p) = W(p, c) * Mat<D>::Identity();
         }
         return L;
     }
@@ -90,6 +94,50 @@ class VertexSimplexEnergy {
     const E& inner() const { return energy_; }
 
   private:
+    /// A_i = [x_0 | ... | x_D] W: row 0 of W is minus the sum of R_i^-1's rows, row k + 1 is row
+    /// k of R_i^-1 (column c of A = sum_k (x_{k+1} - x_0) R^-1(k, c)).
+    using Weights = Eigen::Matrix<double, D + 1, D>;
+    Weights weights(Index i) const {
+        const Mat<D>& Rinv = rest_inverse_[i];
+        Weights W;
+        W.template bottomRows<D>() = Rinv;
+        W.row(0) = -Rinv.colwise().sum();
+        return W;
+    }
+    /// vec(A) = L x, column c of A = sum_p W(p, c) x_p.
+    static Vec<kA> linear_part(const Weights& W, const Vec<arity>& x) {
+        Vec<kA> a;
+        for (int c = 0; c < D; ++c) {
+            a.template segment<D>(D * c) = W(0, c) * x.template segment<D>(0);
+            for (int p = 1; p <= D; ++p)
+                a.template segment<D>(D * c) += W(p, c) * x.template segment<D>(D * p);
+        }
+        return a;
+    }
+    /// L^T H_A L by the structure of L = W^T kron I: the D x D block (p, q) is
+    /// sum_{c, e} W(p, c) W(q, e) H_A(block c, block e), summed over c first (a third of the
+    /// multiplications of the dense product, which Eigen's general product took most of the
+    /// untangling's time for, more so without AVX).
+    static Mat<arity> transformed(const Weights& W, const Mat<kA>& ha) {
+        Eigen::Matrix<double, arity, kA> T;  // block (p, e) = sum_c W(p, c) H_A(block c, e)
+        for (int p = 0; p <= D; ++p) {
+            for (int e = 0; e < D; ++e) {
+                auto t = T.template block<D, D>(D * p, D * e);
+                t = W(p, 0) * ha.template block<D, D>(0, D * e);
+                for (int c = 1; c < D; ++c) t += W(p, c) * ha.template block<D, D>(D * c, D * e);
+            }
+        }
+        Mat<arity> h;
+        for (int q = 0; q <= D; ++q) {
+            for (int p = 0; p <= D; ++p) {
+                auto b = h.template block<D, D>(D * p, D * q);
+                b = W(q, 0) * T.template block<D, D>(D * p, 0);
+                for (int e = 1; e < D; ++e) b += W(q, e) * T.template block<D, D>(D * p, D * e);
+            }
+        }
+        return h;
+    }
+
     E energy_;
     std::vector<Mat<D>> rest_inverse_;
 };
