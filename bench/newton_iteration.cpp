@@ -9,6 +9,7 @@
 #include <sys/resource.h>
 
 #include <CLI/CLI.hpp>
+#include <Eigen/Geometry>
 #include <cmath>
 #include <iomanip>
 #include <iostream>

@@ -11,7 +11,6 @@
 // so that |A^-1|_F^2 = (D == 2 ? I1 : I2) / J^2. Derivatives are closed-form: no automatic
 // differentiation inside, and no SVD unless S is requested. S is valid for det A > 0.
 
-#include <Eigen/Geometry>
 #include <Eigen/LU>
 
 #include "optim/dual.h"

@@ -8,7 +8,6 @@
 // oriented one into it. A tet facet is numbered 4 t + k.
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>
 #include <array>
 #include <vector>
 

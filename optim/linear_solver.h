@@ -29,21 +29,13 @@
 // indefinite matrix (out of memory, a problem too large), the solver falls back to Eigen's
 // SimplicialLDLT and says so in fallback_reason().
 
-#include <Eigen/Sparse>
+#include <Eigen/SparseCore>
 #include <memory>
 #include <string>
 
+#include "optim/linear_solver_type.h"
+
 namespace sa {
-
-enum class LinearSolverType { kAuto, kCholmodSupernodal, kCholmodSimplicial, kEigenLDLT };
-
-std::string to_string(LinearSolverType type);
-/// "cholmod-supernodal", "cholmod-simplicial" or "eigen-ldlt"; throws InvalidArgumentError.
-LinearSolverType parse_linear_solver(const std::string& name);
-
-inline constexpr double kAutoSupernodalFlops = 2e6;
-
-enum class FillOrdering { kBest, kAmd };
 
 enum class FactorizationStatus {
     kSuccess,

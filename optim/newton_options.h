@@ -9,7 +9,7 @@
 
 #include "optim/hessian_projection.h"
 #include "optim/iteration_callback.h"
-#include "optim/linear_solver.h"
+#include "optim/linear_solver_type.h"
 
 namespace sa {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "optim/iteration_record.h"
-#include "optim/linear_solver.h"
+#include "optim/linear_solver_type.h"
 #include "optim/phase_times.h"
 
 namespace sa {

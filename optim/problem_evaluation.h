@@ -18,7 +18,7 @@
 // of threads.
 
 #include <Eigen/Core>
-#include <Eigen/Sparse>
+#include <Eigen/SparseCore>
 #include <memory>
 #include <vector>
 

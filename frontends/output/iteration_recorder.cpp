@@ -1,5 +1,6 @@
 #include "frontends/output/iteration_recorder.h"
 
+#include <Eigen/SVD>
 #include <cstdio>
 #include <filesystem>
 

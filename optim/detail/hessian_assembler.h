@@ -18,7 +18,7 @@
 //
 // Variables that are fixed, or that no term uses, are not free: they are left out of the system.
 
-#include <Eigen/Sparse>
+#include <Eigen/SparseCore>
 #include <cstdint>
 #include <vector>
 
