@@ -54,16 +54,28 @@ bool project_symmetric(Matrix& h, ProjectionMode mode, double epsilon) {
     return changed;
 }
 
+/// A matrix of up to kLargestStackProjection rows and columns, on the stack.
+using StackMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor,
+                                  kLargestStackProjection, kLargestStackProjection>;
+
+/// project_symmetric() on `h` through a copy of type Matrix: contiguous storage, where `h` may
+/// be a view with an outer stride.
+template <class Matrix>
+bool project_copy(MatrixRef h, ProjectionMode mode, double epsilon) {
+    Matrix copy = h;
+    const bool changed = project_symmetric(copy, mode, epsilon);
+    if (changed) h = copy;
+    return changed;
+}
+
 }  // namespace
 
 bool project_hessian_block(MatrixRef h, ProjectionMode mode, double epsilon) {
     if (mode == ProjectionMode::kNone) return false;
     if (is_diagonally_dominant_above(h, epsilon)) return false;
     if (!h.allFinite()) return false;
-    Eigen::MatrixXd copy = h;
-    const bool changed = project_symmetric(copy, mode, epsilon);
-    if (changed) h = copy;
-    return changed;
+    return h.rows() <= kLargestStackProjection ? project_copy<StackMatrix>(h, mode, epsilon)
+                                               : project_copy<Eigen::MatrixXd>(h, mode, epsilon);
 }
 
 namespace detail {
@@ -73,23 +85,19 @@ bool project_by_eigenvalues(Mat<N>& h, ProjectionMode mode, double epsilon) {
     return project_symmetric(h, mode, epsilon);
 }
 
+bool project_small_block_by_eigenvalues(double* h, int n, ProjectionMode mode, double epsilon) {
+    return project_copy<StackMatrix>(Eigen::Map<Eigen::MatrixXd>(h, n, n), mode, epsilon);
+}
+
 }  // namespace detail
 
-static_assert(kLargestFixedSizeProjection == 12, "instantiate every size up to it below");
+static_assert(kLargestFixedSizeProjection == 4, "instantiate every size up to it below");
 #define SA_PROJECT_BY_EIGENVALUES(N) \
     template bool detail::project_by_eigenvalues<N>(Mat<N>&, ProjectionMode, double);
 SA_PROJECT_BY_EIGENVALUES(1)
 SA_PROJECT_BY_EIGENVALUES(2)
 SA_PROJECT_BY_EIGENVALUES(3)
 SA_PROJECT_BY_EIGENVALUES(4)
-SA_PROJECT_BY_EIGENVALUES(5)
-SA_PROJECT_BY_EIGENVALUES(6)
-SA_PROJECT_BY_EIGENVALUES(7)
-SA_PROJECT_BY_EIGENVALUES(8)
-SA_PROJECT_BY_EIGENVALUES(9)
-SA_PROJECT_BY_EIGENVALUES(10)
-SA_PROJECT_BY_EIGENVALUES(11)
-SA_PROJECT_BY_EIGENVALUES(12)
 #undef SA_PROJECT_BY_EIGENVALUES
 
 }  // namespace sa

@@ -38,11 +38,14 @@ bool is_diagonally_dominant_above(const Matrix& h, double epsilon) {
     return true;
 }
 
-/// The largest block projected by a fixed-size eigen-solver. The solvers of sizes 1 to this are
-/// compiled once, in hessian_projection.cpp; larger blocks go through one dynamic-size solver
-/// compiled there too: a fixed-size solver per size is slow to compile and needs gigabytes of
-/// compiler memory (BENCHMARKS.md, "Build time").
-inline constexpr int kLargestFixedSizeProjection = 12;
+/// The eigen-solvers are compiled once, in hessian_projection.cpp: one of fixed size for each
+/// block of up to kLargestFixedSizeProjection variables (the simplices' blocks), one for any
+/// size up to kLargestStackProjection on storage of that capacity (as fast as the fixed-size
+/// ones there, without a heap allocation), and one for larger blocks. A fixed-size solver per
+/// size, instantiated where it is used, had made single units take minutes to compile
+/// (BENCHMARKS.md, "Build time").
+inline constexpr int kLargestFixedSizeProjection = 4;
+inline constexpr int kLargestStackProjection = 16;
 
 /// Projects the symmetric block `h` in place (see the modes above), of any size. Returns true
 /// when `h` was changed. A block with a non-finite entry is left as it is and reported as
@@ -55,6 +58,9 @@ namespace detail {
 /// hessian_projection.cpp for N = 1 .. kLargestFixedSizeProjection.
 template <int N>
 bool project_by_eigenvalues(Mat<N>& h, ProjectionMode mode, double epsilon);
+/// The same for a block of n <= kLargestStackProjection variables at h (column-major), checked
+/// already (finite, not diagonally dominant).
+bool project_small_block_by_eigenvalues(double* h, int n, ProjectionMode mode, double epsilon);
 
 }  // namespace detail
 
@@ -64,10 +70,12 @@ bool project_hessian_block(Mat<N>& h, ProjectionMode mode, double epsilon) {
     if (mode == ProjectionMode::kNone) return false;
     if (is_diagonally_dominant_above(h, epsilon)) return false;
     if (!h.allFinite()) return false;
-    if constexpr (N > kLargestFixedSizeProjection) {
-        return project_hessian_block(MatrixRef(h), mode, epsilon);
-    } else {
+    if constexpr (N <= kLargestFixedSizeProjection) {
         return detail::project_by_eigenvalues<N>(h, mode, epsilon);
+    } else if constexpr (N <= kLargestStackProjection) {
+        return detail::project_small_block_by_eigenvalues(h.data(), N, mode, epsilon);
+    } else {
+        return project_hessian_block(MatrixRef(h), mode, epsilon);
     }
 }
 

@@ -85,11 +85,11 @@ TEST(HessianProjection, NoneLeavesIndefiniteBlock) {
     EXPECT_EQ(h, original);
 }
 
-// Past kLargestFixedSizeProjection, blocks go to a dynamic-size solver: same modes, same results.
-TEST(HessianProjection, LargeBlocksAreProjectedAlike) {
-    constexpr int N = 20;
-    static_assert(N > kLargestFixedSizeProjection);
-    std::mt19937 rng(6);
+// Past kLargestFixedSizeProjection, blocks go to a solver on stack storage, and past
+// kLargestStackProjection to a dynamic-size one: same modes, same results.
+template <int N>
+void expect_projected_alike(unsigned seed) {
+    std::mt19937 rng(seed);
     const Vec<N> spectrum = Vec<N>::LinSpaced(-5.0, 7.0);
     const double eps = 1e-3;
     // Checked with dynamic-size solvers: a fixed-size one of this arity is slow to compile.
@@ -116,6 +116,13 @@ TEST(HessianProjection, LargeBlocksAreProjectedAlike) {
     h = positive;
     EXPECT_FALSE(project_hessian_block<N>(h, ProjectionMode::kClamp, eps));
     EXPECT_EQ(h, positive);
+}
+
+TEST(HessianProjection, LargeBlocksAreProjectedAlike) {
+    static_assert(9 > kLargestFixedSizeProjection && 9 <= kLargestStackProjection);
+    expect_projected_alike<9>(6);
+    static_assert(20 > kLargestStackProjection);
+    expect_projected_alike<20>(7);
 }
 
 }  // namespace
