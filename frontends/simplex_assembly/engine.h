@@ -64,8 +64,10 @@
 #include <utility>
 #include <vector>
 
+#include "energies/distortion_barrier.h"
 #include "energies/linear_constraint_energy.h"
 #include "energies/reindexed_energy.h"
+#include "energies/simplex_energy.h"
 #include "energies/vertex_copy_energies.h"
 #include "frontends/simplex_assembly/engine_options.h"
 #include "optim/errors.h"
@@ -363,5 +365,25 @@ TermId SimplexAssemblyEngine<D>::add_linear_part_constraints(
 
 extern template class SimplexAssemblyEngine<2>;
 extern template class SimplexAssemblyEngine<3>;
+
+/// The engine's terms of the per-simplex energy E = __VA_ARGS__ in dimension D, in every layout
+/// and restricted (ReindexedEnergy): declared with PREFIX `extern`, compiled with no PREFIX.
+#define SA_SIMPLEX_ENERGY_TERMS(PREFIX, D, ...)                                                  \
+    PREFIX template class EnergyTerm<__VA_ARGS__>;                                               \
+    PREFIX template class EnergyTerm<ReindexedEnergy<__VA_ARGS__>>;                              \
+    PREFIX template class EnergyTerm<VertexSimplexEnergy<D, __VA_ARGS__>>;                       \
+    PREFIX template class EnergyTerm<VertexSimplexEnergy<D, ReindexedEnergy<__VA_ARGS__>>>;      \
+    PREFIX template TermId SimplexAssemblyEngine<D>::add_simplex_energy(                         \
+        std::string, __VA_ARGS__, std::vector<Index>, double);                                   \
+    PREFIX template TermId SimplexAssemblyEngine<D>::add_simplex_energy(                         \
+        std::string, ReindexedEnergy<__VA_ARGS__>, std::vector<Index>, double);
+
+// The built-in energies' terms, E_m + E_C of the options (SimplexEnergy) and a barrier on a
+// built-in distortion, are compiled once, in builtin_simplex_terms_2d.cpp and _3d.cpp, rather
+// than in every unit that adds one (BENCHMARKS.md, "Build time").
+SA_SIMPLEX_ENERGY_TERMS(extern, 2, SimplexEnergy<2>)
+SA_SIMPLEX_ENERGY_TERMS(extern, 3, SimplexEnergy<3>)
+SA_SIMPLEX_ENERGY_TERMS(extern, 2, DistortionBarrier<2, BuiltinDistortion<2>>)
+SA_SIMPLEX_ENERGY_TERMS(extern, 3, DistortionBarrier<3, BuiltinDistortion<3>>)
 
 }  // namespace sa

@@ -31,7 +31,9 @@
 #include <vector>
 
 #include "energies/barrier.h"
+#include "energies/distortion_barrier.h"
 #include "energies/reindexed_energy.h"
+#include "energies/simplex_energy.h"
 #include "energies/vertex_copy_energies.h"
 #include "frontends/simplex_assembly/engine.h"
 
@@ -233,6 +235,12 @@ class SimplexTermOf final : public SimplexTerm<D> {
     std::shared_ptr<const E> energy_;
     std::vector<Index> selected_;
 };
+
+// Compiled once, with the engine's terms of the same energies (engine.h).
+extern template class SimplexTermOf<2, SimplexEnergy<2>>;
+extern template class SimplexTermOf<3, SimplexEnergy<3>>;
+extern template class SimplexTermOf<2, DistortionBarrier<2, BuiltinDistortion<2>>>;
+extern template class SimplexTermOf<3, DistortionBarrier<3, BuiltinDistortion<3>>>;
 
 /// A per-simplex energy for MappingProblem::energies (element s = simplex s of its mesh).
 template <int D, ElementEnergy E>
