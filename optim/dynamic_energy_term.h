@@ -7,13 +7,13 @@
 // Problem::add_term() makes one.
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
-#include <atomic>
 #include <functional>
+#include <utility>
 #include <vector>
 
+#include "optim/detail/element_reductions.h"
 #include "optim/dynamic_element_energy.h"
 #include "optim/ragged_elements.h"
 #include "optim/term.h"
@@ -57,24 +57,11 @@ class DynamicEnergyTerm final : public Term {
     bool has_max_step() const override { return DynamicHasMaxStep<E>; }
 
     double value(const Eigen::VectorXd& x) const override {
-        std::atomic<bool> infeasible{false};
-        const double sum = tbb::parallel_deterministic_reduce(
-            range(), 0.0,
-            [&](const tbb::blocked_range<Index>& r, double acc) {
-                if (infeasible.load(std::memory_order_relaxed)) return kInfinity;
-                Scratch scratch(elements_.max_arity());
-                for (Index e = r.begin(); e != r.end(); ++e) {
-                    const double v = energy_.value(e, scratch.gather(x, elements_, e));
-                    if (!(v < kInfinity)) {
-                        if (v == kInfinity) infeasible.store(true, std::memory_order_relaxed);
-                        return v;
-                    }
-                    acc += v;
-                }
-                return acc;
-            },
-            std::plus<double>());
-        return infeasible.load() ? kInfinity : sum;
+        return detail::sum_of_element_values(
+            elements_.size(), kGrain, [&] { return Scratch(elements_.max_arity()); },
+            [&](Index e, Scratch& scratch) {
+                return energy_.value(e, scratch.gather(x, elements_, e));
+            });
     }
 
     double evaluate(const Eigen::VectorXd& x, double scale, double* gradient_slots,
@@ -155,18 +142,16 @@ class DynamicEnergyTerm final : public Term {
         if constexpr (!DynamicHasMaxStep<E>) {
             return kInfinity;
         } else {
-            return tbb::parallel_reduce(
-                range(), kInfinity,
-                [&](const tbb::blocked_range<Index>& r, double smallest) {
-                    Scratch at(elements_.max_arity()), along(elements_.max_arity());
-                    for (Index e = r.begin(); e != r.end(); ++e) {
-                        smallest = std::min(
-                            smallest, double(energy_.max_step(e, at.gather(x, elements_, e),
-                                                              along.gather(dx, elements_, e))));
-                    }
-                    return smallest;
-                },
-                [](double a, double b) { return std::min(a, b); });
+            // Two scratches per task: the element's x and its dx.
+            const auto make_scratch = [&] {
+                return std::pair(Scratch(elements_.max_arity()), Scratch(elements_.max_arity()));
+            };
+            return detail::smallest_element_step(
+                elements_.size(), kGrain, make_scratch,
+                [&](Index e, std::pair<Scratch, Scratch>& at_along) {
+                    return energy_.max_step(e, at_along.first.gather(x, elements_, e),
+                                            at_along.second.gather(dx, elements_, e));
+                });
         }
     }
 

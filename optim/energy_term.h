@@ -4,14 +4,13 @@
 // Problem::add_term() makes one.
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
 #include <array>
-#include <atomic>
 #include <functional>
 #include <vector>
 
+#include "optim/detail/element_reductions.h"
 #include "optim/element_energy.h"
 #include "optim/term.h"
 
@@ -46,23 +45,9 @@ class EnergyTerm final : public Term {
     bool has_max_step() const override { return HasMaxStep<E>; }
 
     double value(const Eigen::VectorXd& x) const override {
-        std::atomic<bool> infeasible{false};
-        const double sum = tbb::parallel_deterministic_reduce(
-            range(), 0.0,
-            [&](const tbb::blocked_range<Index>& r, double acc) {
-                if (infeasible.load(std::memory_order_relaxed)) return kInfinity;
-                for (Index e = r.begin(); e != r.end(); ++e) {
-                    const double v = energy_.value(e, gather(x, e));
-                    if (!(v < kInfinity)) {
-                        if (v == kInfinity) infeasible.store(true, std::memory_order_relaxed);
-                        return v;
-                    }
-                    acc += v;
-                }
-                return acc;
-            },
-            std::plus<double>());
-        return infeasible.load() ? kInfinity : sum;
+        return detail::sum_of_element_values(
+            static_cast<Index>(elements_.size()), kGrain, [] { return 0; },
+            [&](Index e, int) { return energy_.value(e, gather(x, e)); });
     }
 
     double evaluate(const Eigen::VectorXd& x, double scale, double* gradient_slots,
@@ -105,16 +90,9 @@ class EnergyTerm final : public Term {
         if constexpr (!HasMaxStep<E>) {
             return kInfinity;
         } else {
-            return tbb::parallel_reduce(
-                range(), kInfinity,
-                [&](const tbb::blocked_range<Index>& r, double smallest) {
-                    for (Index e = r.begin(); e != r.end(); ++e) {
-                        smallest = std::min(
-                            smallest, double(energy_.max_step(e, gather(x, e), gather(dx, e))));
-                    }
-                    return smallest;
-                },
-                [](double a, double b) { return std::min(a, b); });
+            return detail::smallest_element_step(
+                static_cast<Index>(elements_.size()), kGrain, [] { return 0; },
+                [&](Index e, int) { return energy_.max_step(e, gather(x, e), gather(dx, e)); });
         }
     }
 
