@@ -34,16 +34,15 @@ void Problem::check_element_index(const std::string& term, std::size_t element, 
 
 void Problem::check_element_arity(const std::string& term, Index element, int arity, int expected,
                                   int block) {
+    if (arity > 0 && arity == expected && (block == 0 || arity % block == 0)) return;
     std::ostringstream msg;
     msg << "term '" << term << "': element " << element << " names " << arity << " variables";
     if (arity == 0) {
         msg << "; an element names at least one";
     } else if (arity != expected) {
         msg << ", its energy's data expects " << expected;
-    } else if (block > 0 && arity % block != 0) {
-        msg << ", not a multiple of the energy's Hessian block " << block;
     } else {
-        return;
+        msg << ", not a multiple of the energy's Hessian block " << block;
     }
     throw InvalidArgumentError(msg.str());
 }

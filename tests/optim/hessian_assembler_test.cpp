@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <numeric>
 #include <random>
 
 #include "optim/detail/hessian_assembler.h"
@@ -26,6 +28,45 @@ struct BlockCoupled : AutodiffEnergy<BlockCoupled, 4> {
     template <class T>
     T energy(Index, const Eigen::Matrix<T, 4, 1>& x) const {
         const T s = x[0] * x[1] + x[2] * x[3];
+        return s * s;
+    }
+};
+
+/// 0.5 (sum_k x_k)^2 + sum_k cos(x_k) over any number of variables: a dense Hessian that is not
+/// positive semidefinite everywhere (dynamic_element_energy.h).
+struct DenseRagged {
+    static constexpr int arity = kDynamicArity;
+    double value(Index, ConstVectorRef x) const {
+        return 0.5 * x.sum() * x.sum() + x.array().cos().sum();
+    }
+    double value_gradient_hessian(Index e, ConstVectorRef x, VectorRef g, MatrixRef h) const {
+        g = Eigen::VectorXd::Constant(x.size(), x.sum()) - x.array().sin().matrix();
+        h.setOnes();
+        h.diagonal() -= x.array().cos().matrix();
+        return value(e, x);
+    }
+};
+
+/// (sum_p x_2p x_2p+1)^2 over pairs of variables, only its diagonal 2 x 2 blocks assembled: the
+/// B x n form of dynamic_element_energy.h.
+struct BlockedRagged {
+    static constexpr int arity = kDynamicArity;
+    static constexpr int hessian_block = 2;
+    static double pair_sum(ConstVectorRef x) {
+        double s = 0.0;
+        for (Index p = 0; 2 * p < x.size(); ++p) s += x[2 * p] * x[2 * p + 1];
+        return s;
+    }
+    double value(Index, ConstVectorRef x) const { return pair_sum(x) * pair_sum(x); }
+    double value_gradient_hessian(Index, ConstVectorRef x, VectorRef g, MatrixRef h) const {
+        const double s = pair_sum(x);
+        for (Index p = 0; 2 * p < x.size(); ++p) {
+            const double a = x[2 * p], b = x[2 * p + 1];
+            g[2 * p] = 2.0 * s * b;
+            g[2 * p + 1] = 2.0 * s * a;
+            h.middleCols(2 * p, 2) << 2.0 * b * b, 2.0 * a * b + 2.0 * s, 2.0 * a * b + 2.0 * s,
+                2.0 * a * a;
+        }
         return s * s;
     }
 };
@@ -127,6 +168,51 @@ TEST(HessianAssembler, KeepsOnlyTheDiagonalBlocksOfABlockedTerm) {
     EXPECT_EQ(assembler.hessian().nonZeros(), n / 2 * 3);  // two diagonals and one below each
     const Eigen::MatrixXd reference = dense_reference(problem, problem.variables());
     const Eigen::MatrixXd assembled = Eigen::MatrixXd(assembler.hessian());
+    double largest_error = 0.0;
+    for (Index j = 0; j < n; ++j) {
+        for (Index i = j; i < n; ++i)
+            largest_error = std::max(largest_error, std::abs(assembled(i, j) - reference(i, j)));
+    }
+    EXPECT_GT(reference.cwiseAbs().maxCoeff(), 0.1);
+    EXPECT_LT(largest_error, 1e-12 * reference.cwiseAbs().maxCoeff());
+}
+
+// Terms of run-time arity, elements of 1 to 7 variables (dense) and of 1 to 5 pairs (blocked),
+// sharing variables with each other and with a fixed-arity term: assembled as the dense sum.
+TEST(HessianAssembler, AssemblesRaggedElementsDenseAndBlocked) {
+    const int n = 120;
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    std::uniform_int_distribution<int> size(1, 7), pairs(1, 5);
+    Eigen::VectorXd x0(n);
+    for (int i = 0; i < n; ++i) x0[i] = uniform(rng);
+    Problem problem(x0);
+    std::vector<Index> all(n);
+    std::iota(all.begin(), all.end(), Index(0));
+    // `count` distinct variables at random.
+    const auto some = [&](int count) {
+        std::shuffle(all.begin(), all.end(), rng);
+        return std::vector<Index>(all.begin(), all.begin() + count);
+    };
+    RaggedElements dense, blocked;
+    std::vector<std::array<Index, 2>> links;
+    for (int k = 0; k < 60; ++k) {
+        dense.push_back(some(size(rng)));
+        blocked.push_back(some(2 * pairs(rng)));
+        const std::vector<Index> link = some(2);
+        links.push_back({link[0], link[1]});
+    }
+    problem.add_term("dense", DenseRagged{}, std::move(dense), 0.8);
+    problem.add_term("blocked", BlockedRagged{}, std::move(blocked), 1.3);
+    problem.add_term("links", QuadraticLink{}, links, 2.0);
+    EXPECT_EQ(problem.term(1).layout().block, 2);
+
+    HessianAssembler assembler(problem);
+    PhaseTimes times;
+    assembler.evaluate(problem, problem.variables(), ProjectionMode::kClamp, 1e-8, times);
+    const Eigen::MatrixXd reference = dense_reference(problem, problem.variables());
+    const Eigen::MatrixXd assembled = Eigen::MatrixXd(assembler.hessian());
+    ASSERT_EQ(assembler.num_free(), n);
     double largest_error = 0.0;
     for (Index j = 0; j < n; ++j) {
         for (Index i = j; i < n; ++i)
