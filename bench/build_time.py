@@ -164,11 +164,13 @@ def main():
     parser.add_argument('--cmake-args', default='',
                         help='more arguments for cmake (--cmake-args=-DX=Y for one that starts '
                              'with a dash)')
-    parser.add_argument('--keep', help='build in this folder and keep it')
+    parser.add_argument('--keep', help='build in this folder (new or empty) and keep it')
     parser.add_argument('--log', help='also copy the per-unit log to this file')
     parser.add_argument('--write', help='put the table into this file (BENCHMARKS.md)')
     args = parser.parse_args()
 
+    if args.keep and os.path.exists(args.keep) and os.listdir(args.keep):
+        sys.exit('build_time.py: --keep %s: not an empty folder' % args.keep)
     work = args.keep or tempfile.mkdtemp(prefix='sa-build-time-')
     try:
         source = os.path.join(work, 'source')

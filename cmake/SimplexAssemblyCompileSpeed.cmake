@@ -3,9 +3,9 @@
 #
 # - sa_precompile_headers(target [TBB] [GTEST] [CLI]): the standard, Eigen and (when asked) TBB,
 #   GoogleTest and CLI11 headers that nearly every unit of `target` includes are parsed once per
-#   target, into a precompiled header, instead of once per unit. SA_PRECOMPILED_HEADERS (on)
+#   target, into a precompiled header, instead of once per unit. -DSA_PRECOMPILED_HEADERS=OFF
 #   turns them off; the sources include what they use either way, so that they build without
-#   them (CI's optimizer-alone build and an installed package's users do).
+#   them (and the installed headers compile in a user's project, which has none).
 # - ccache, when it is installed and no compiler launcher is set, for a developer's warm
 #   rebuilds (CI builds from scratch and does not install it).
 

@@ -168,10 +168,7 @@ struct AngleSumEnergy : Geometry {
     double angle_sum(Index e, ConstVectorRef x, Eigen::VectorXd* gradient = nullptr) const;
 };
 
-extern template struct AngleSumEnergy<DihedralFans>;
-extern template struct AngleSumEnergy<DihedralRings>;
-extern template struct AngleSumEnergy<SolidAngleStars>;
-extern template struct AngleSumEnergy<SolidAngleRings>;
+// The members are compiled in tet_angle_barriers.cpp, for the four geometries below.
 
 /// E_e in A-form over the tetrahedra around a boundary edge.
 using DihedralSumEnergy = AngleSumEnergy<DihedralFans>;

@@ -50,12 +50,12 @@ class VertexSimplexEnergy {
         h = transformed(W, ha);
         return v;
     }
-    /// Projects in A: the Hessian is L^T H_A L with L = map(i), and L^T P(H_A) L is positive
-    /// semidefinite whenever P(H_A) is (Smith, De Goes and Kim 2019 do the same). It is not the
-    /// eigenvalue projection of the D(D+1) x D(D+1) block: L's null space (translations of the
-    /// simplex) keeps eigenvalue 0 instead of epsilon, and the rest is clamped in A's metric.
-    /// One 9 x 9 (4 x 4) projection through the singular vectors of A instead of a 12 x 12
-    /// (6 x 6) eigen-decomposition. An energy without a projection of its own gets the
+    /// Projects in A: the Hessian is L^T H_A L with vec(A_i) = L x (L = W^T kron I, W below),
+    /// and L^T P(H_A) L is positive semidefinite whenever P(H_A) is (Smith, De Goes and Kim 2019
+    /// do the same). It is not the eigenvalue projection of the D(D+1) x D(D+1) block: L's null
+    /// space (translations of the simplex) keeps eigenvalue 0 instead of epsilon, and the rest is
+    /// clamped in A's metric. One 9 x 9 (4 x 4) projection through the singular vectors of A
+    /// instead of a 12 x 12 (6 x 6) eigen-decomposition. An energy without a projection of its own gets the
     /// eigenvalue projection of its D^2 x D^2 block (project_hessian_block()).
     bool project_hessian(Index i, const Vec<arity>& x, Mat<arity>& h, ProjectionMode mode,
                          double epsilon) const {
@@ -79,18 +79,6 @@ class VertexSimplexEnergy {
         const Weights W = weights(i);
         return energy_.max_step(i, linear_part(W, x), linear_part(W, dx));
     }
-    /// The linear map L from the copies (x_0, ..., x_D) to vec(A_i): vec(A_i) = L x.
-    Eigen::Matrix<double, kA, arity> map(Index i) const {
-        // vec(X W) = (W^T kron I) vec(X).
-        const Weights W = weights(i);
-        Eigen::Matrix<double, kA, arity> L;
-        for (int c = 0; c < D; ++c) {
-            for (int p = 0; p <= D; ++p)
-                L.template block<D, D>(D * c, D * p) = W(p, c) * Mat<D>::Identity();
-        }
-        return L;
-    }
-
     const E& inner() const { return energy_; }
 
   private:
@@ -115,9 +103,8 @@ class VertexSimplexEnergy {
         return a;
     }
     /// L^T H_A L by the structure of L = W^T kron I: the D x D block (p, q) is
-    /// sum_{c, e} W(p, c) W(q, e) H_A(block c, block e), summed over c first (a third of the
-    /// multiplications of the dense product, which Eigen's general product took most of the
-    /// untangling's time for, more so without AVX).
+    /// sum_{c, e} W(p, c) W(q, e) H_A(block c, block e), summed over c first: a third of the
+    /// multiplications of the dense product L^T H_A L.
     static Mat<arity> transformed(const Weights& W, const Mat<kA>& ha) {
         Eigen::Matrix<double, arity, kA> T;  // block (p, e) = sum_c W(p, c) H_A(block c, e)
         for (int p = 0; p <= D; ++p) {

@@ -21,9 +21,10 @@
 //
 //   static constexpr int hessian_block = B;     only the diagonal B x B blocks are assembled,
 //                                               and every element's arity is a multiple of B
-//   int element_arity(Index element) const;     the arity the per-element data expects:
-//                                               Problem::add_term() checks each element's
 //   Index num_elements() const;                 checked against the number of elements
+//   int element_arity(Index element) const;     the arity element `element`'s own data expect
+//                                               (called after the count is checked):
+//                                               Problem::add_term() checks each element's
 //   double max_step(Index element, ConstVectorRef x, ConstVectorRef dx) const;
 //   double value_gradient(Index element, ConstVectorRef x, VectorRef gradient) const;
 //   bool project_hessian(Index element, ConstVectorRef x, MatrixRef hessian, ProjectionMode mode,
@@ -31,8 +32,8 @@
 //   static constexpr bool is_quadratic = true;
 //   static constexpr bool is_convex = true;
 //
-// Without project_hessian(), each block is projected by project_hessian_block() (a fixed-size
-// eigen-solver for a declared B, the dynamic one compiled once for whole dense elements).
+// Without project_hessian(), each block (B x B, or the whole n x n) is projected by
+// project_hessian_block(), whose eigen-solvers are compiled once (hessian_projection.h).
 
 #include <Eigen/Core>
 #include <concepts>

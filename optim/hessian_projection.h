@@ -39,11 +39,11 @@ bool is_diagonally_dominant_above(const Matrix& h, double epsilon) {
 }
 
 /// The eigen-solvers are compiled once, in hessian_projection.cpp: one of fixed size for each
-/// block of up to kLargestFixedSizeProjection variables (the simplices' blocks), one for any
-/// size up to kLargestStackProjection on storage of that capacity (as fast as the fixed-size
-/// ones there, without a heap allocation), and one for larger blocks. A fixed-size solver per
-/// size, instantiated where it is used, had made single units take minutes to compile
-/// (BENCHMARKS.md, "Build time").
+/// block of up to kLargestFixedSizeProjection variables (the 2D linear parts' blocks and
+/// smaller), one for any size up to kLargestStackProjection on storage of that capacity (the 3D
+/// blocks of 9 and 12 variables, as fast there as fixed-size ones and without a heap
+/// allocation), and one for larger blocks. A fixed-size solver per size, instantiated in every
+/// unit that projects such blocks, is slow to compile (BENCHMARKS.md, "Build time").
 inline constexpr int kLargestFixedSizeProjection = 4;
 inline constexpr int kLargestStackProjection = 16;
 

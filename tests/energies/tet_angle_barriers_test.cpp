@@ -194,8 +194,8 @@ TEST(TetAngleBarriers, AFormAgreesWithTheVertexFormAndHasItsDerivatives) {
     expect_derivatives(solid, perturbed(identity, 7, 0.1));
 }
 
-// The A-forms on fans and stars of 3 to 40 tetrahedra (up to 360 variables, more than a
-// fixed-size element could hold): finite values and derivatives that match finite differences.
+// The A-forms on fans and stars of 3 to 40 tetrahedra (up to 360 variables): finite values and
+// derivatives that match finite differences.
 TEST(TetAngleBarriers, AFormsOnFansAndStarsOfAnySize) {
     for (const int K : {3, 14, 15, 31, 40}) {
         // Around the edge (0, 0, 1) and around the vertex 0, ring points over 330 degrees.
