@@ -55,8 +55,8 @@ class VertexSimplexEnergy {
     /// do the same). It is not the eigenvalue projection of the D(D+1) x D(D+1) block: L's null
     /// space (translations of the simplex) keeps eigenvalue 0 instead of epsilon, and the rest is
     /// clamped in A's metric. One 9 x 9 (4 x 4) projection through the singular vectors of A
-    /// instead of a 12 x 12 (6 x 6) eigen-decomposition. An energy without a projection of its own gets the
-    /// eigenvalue projection of its D^2 x D^2 block (project_hessian_block()).
+    /// instead of a 12 x 12 (6 x 6) eigen-decomposition. An energy without a projection of its own
+    /// gets the eigenvalue projection of its D^2 x D^2 block (project_hessian_block()).
     bool project_hessian(Index i, const Vec<arity>& x, Mat<arity>& h, ProjectionMode mode,
                          double epsilon) const {
         const Weights W = weights(i);

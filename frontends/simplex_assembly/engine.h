@@ -368,14 +368,14 @@ extern template class SimplexAssemblyEngine<3>;
 
 /// The engine's terms of the per-simplex energy E = __VA_ARGS__ in dimension D, in every layout
 /// and restricted (ReindexedEnergy): declared with PREFIX `extern`, compiled with no PREFIX.
-#define SA_SIMPLEX_ENERGY_TERMS(PREFIX, D, ...)                                                  \
-    PREFIX template class EnergyTerm<__VA_ARGS__>;                                               \
-    PREFIX template class EnergyTerm<ReindexedEnergy<__VA_ARGS__>>;                              \
-    PREFIX template class EnergyTerm<VertexSimplexEnergy<D, __VA_ARGS__>>;                       \
-    PREFIX template class EnergyTerm<VertexSimplexEnergy<D, ReindexedEnergy<__VA_ARGS__>>>;      \
-    PREFIX template TermId SimplexAssemblyEngine<D>::add_simplex_energy(                         \
-        std::string, __VA_ARGS__, std::vector<Index>, double);                                   \
-    PREFIX template TermId SimplexAssemblyEngine<D>::add_simplex_energy(                         \
+#define SA_SIMPLEX_ENERGY_TERMS(PREFIX, D, ...)                                             \
+    PREFIX template class EnergyTerm<__VA_ARGS__>;                                          \
+    PREFIX template class EnergyTerm<ReindexedEnergy<__VA_ARGS__>>;                         \
+    PREFIX template class EnergyTerm<VertexSimplexEnergy<D, __VA_ARGS__>>;                  \
+    PREFIX template class EnergyTerm<VertexSimplexEnergy<D, ReindexedEnergy<__VA_ARGS__>>>; \
+    PREFIX template TermId SimplexAssemblyEngine<D>::add_simplex_energy(                    \
+        std::string, __VA_ARGS__, std::vector<Index>, double);                              \
+    PREFIX template TermId SimplexAssemblyEngine<D>::add_simplex_energy(                    \
         std::string, ReindexedEnergy<__VA_ARGS__>, std::vector<Index>, double);
 
 // The built-in energies' terms, E_m + E_C of the options (SimplexEnergy) and a barrier on a

@@ -96,6 +96,16 @@ Eigen::MatrixXd dense_reference(const Problem& problem, const Eigen::VectorXd& x
     return H;
 }
 
+/// The largest difference between a and b on and below the diagonal.
+double largest_lower_difference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+    double largest = 0.0;
+    for (Index j = 0; j < a.cols(); ++j) {
+        for (Index i = j; i < a.rows(); ++i)
+            largest = std::max(largest, std::abs(a(i, j) - b(i, j)));
+    }
+    return largest;
+}
+
 // The assembled lower triangle equals the dense sum of the element Hessians restricted to the free
 // variables, for terms with and without a constant Hessian sharing entries, repeated elements,
 // fixed variables and a variable no term uses.
@@ -168,11 +178,7 @@ TEST(HessianAssembler, KeepsOnlyTheDiagonalBlocksOfABlockedTerm) {
     EXPECT_EQ(assembler.hessian().nonZeros(), n / 2 * 3);  // two diagonals and one below each
     const Eigen::MatrixXd reference = dense_reference(problem, problem.variables());
     const Eigen::MatrixXd assembled = Eigen::MatrixXd(assembler.hessian());
-    double largest_error = 0.0;
-    for (Index j = 0; j < n; ++j) {
-        for (Index i = j; i < n; ++i)
-            largest_error = std::max(largest_error, std::abs(assembled(i, j) - reference(i, j)));
-    }
+    const double largest_error = largest_lower_difference(assembled, reference);
     EXPECT_GT(reference.cwiseAbs().maxCoeff(), 0.1);
     EXPECT_LT(largest_error, 1e-12 * reference.cwiseAbs().maxCoeff());
 }
@@ -213,11 +219,7 @@ TEST(HessianAssembler, AssemblesRaggedElementsDenseAndBlocked) {
     const Eigen::MatrixXd reference = dense_reference(problem, problem.variables());
     const Eigen::MatrixXd assembled = Eigen::MatrixXd(assembler.hessian());
     ASSERT_EQ(assembler.num_free(), n);
-    double largest_error = 0.0;
-    for (Index j = 0; j < n; ++j) {
-        for (Index i = j; i < n; ++i)
-            largest_error = std::max(largest_error, std::abs(assembled(i, j) - reference(i, j)));
-    }
+    const double largest_error = largest_lower_difference(assembled, reference);
     EXPECT_GT(reference.cwiseAbs().maxCoeff(), 0.1);
     EXPECT_LT(largest_error, 1e-12 * reference.cwiseAbs().maxCoeff());
 }
