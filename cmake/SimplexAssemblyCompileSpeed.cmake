@@ -1,8 +1,8 @@
 # How the project's own targets are compiled quickly, included by the top-level CMakeLists.txt
 # (BENCHMARKS.md, "Build time", measures each choice):
 #
-# - sa_precompile_headers(target [TBB] [GTEST] [CLI]): the standard, Eigen and (when asked) TBB,
-#   GoogleTest and CLI11 headers that nearly every unit of `target` includes are parsed once per
+# - sa_precompile_headers(target [TBB] [GTEST]): the standard, Eigen and (when asked) TBB and
+#   GoogleTest headers that nearly every unit of `target` includes are parsed once per
 #   target, into a precompiled header, instead of once per unit. -DSA_PRECOMPILED_HEADERS=OFF
 #   turns them off; the sources include what they use either way, so that they build without
 #   them (and the installed headers compile in a user's project, which has none).
@@ -32,16 +32,13 @@ function(sa_precompile_headers target)
     if(NOT SA_PRECOMPILED_HEADERS)
         return()
     endif()
-    cmake_parse_arguments(arg "TBB;GTEST;CLI" "" "" ${ARGN})
+    cmake_parse_arguments(arg "TBB;GTEST" "" "" ${ARGN})
     set(headers ${sa_pch_headers})
     if(arg_TBB)
         list(APPEND headers <tbb/blocked_range.h> <tbb/parallel_for.h> <tbb/parallel_reduce.h>)
     endif()
     if(arg_GTEST)
         list(APPEND headers <gtest/gtest.h>)
-    endif()
-    if(arg_CLI)
-        list(APPEND headers <CLI/CLI.hpp>)
     endif()
     target_precompile_headers(${target} PRIVATE ${headers})
 endfunction()

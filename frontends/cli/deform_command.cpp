@@ -4,7 +4,6 @@
 #include <iostream>
 
 #include "frontends/cli/cli_support.h"
-#include "frontends/cli/option_checks.h"
 #include "frontends/cli/out_of_memory.h"
 #include "frontends/cli/runtime_settings.h"
 #include "frontends/deform/deform_solve.h"
@@ -99,61 +98,6 @@ nlohmann::json deform_report(const DeformArguments& a, const DeformResult& r) {
 }
 
 }  // namespace
-
-CLI::App* add_deform_command(CLI::App& app, DeformArguments& a) {
-    CLI::App* deform = app.add_subcommand(
-        "deform",
-        "Pose a tet mesh (or a planar triangle mesh) by its handles: an ARAP start, then Simplex "
-        "Assembly bounding the conformal and the volumetric distortion (section 5.4)");
-    deform->add_option("--rest", a.rest, "rest mesh (.mesh .node/.ele .vtk .vtu .obj .off ...)")
-        ->required();
-    deform->add_option("--handles", a.handles,
-                       "handle vertices, 0-based (without it, --targets lists `index x y z` rows)");
-    deform
-        ->add_option("--targets", a.targets,
-                     "where the handles go: a mesh file or rows `x y z` (one per vertex or one "
-                     "per handle), or rows `index x y z`")
-        ->required();
-    deform->add_flag("--optimal-bound", a.optimal_bound,
-                     "find both bounds: rounds that take the largest conformal and volumetric "
-                     "distortion reached as the next bounds (section 5.1)");
-    deform->add_option("--optimal-bound-rounds", a.optimal_bound_rounds, "rounds at most")
-        ->capture_default_str();
-    deform
-        ->add_option("--bound-conformal", a.bound_conformal,
-                     "bound on the conformal distortion d^c, a number > 1 or inf")
-        ->capture_default_str();
-    deform
-        ->add_option("--bound-volumetric", a.bound_volumetric,
-                     "bound on the volumetric distortion (det A + 1/det A)/2, > 1 or inf")
-        ->capture_default_str();
-    deform->add_option("--mu", a.mu, "weight of E_m = sum |A - A0|^2 to the ARAP start")
-        ->capture_default_str();
-    deform
-        ->add_option("--initialization", a.initialization,
-                     "projection of the start's linear parts: rotation (default), similarity, "
-                     "identity, random or bounded:K")
-        ->capture_default_str();
-    deform->add_option("--start-iterations", a.start_iterations, "ARAP iterations at most")
-        ->capture_default_str();
-    deform
-        ->add_option("--start-tolerance", a.start_tolerance,
-                     "ARAP stops when no vertex moves more than this times the diagonal")
-        ->capture_default_str();
-    deform->add_option("--out", a.out, "the posed mesh: .vtu .vtk .mesh .node (.obj .off in 2D)")
-        ->required();
-    add_picture_options(
-        *deform, a.png, a.no_png,
-        "a picture of the pose: the surface coloured by isometric distortion, inverted simplices "
-        "in red");
-    deform->add_option("--report", a.report, "JSON report");
-    add_max_time_option(*deform, a.max_time,
-                        "the whole solve (the ARAP start and Simplex Assembly take what is left)",
-                        "pose");
-    add_threads_option(*deform, a.threads);
-    add_force_and_quiet(*deform, a.force, a.quiet);
-    return deform;
-}
 
 DeformOptions deform_options(const DeformArguments& a) {
     DeformOptions options;

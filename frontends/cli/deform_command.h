@@ -8,7 +8,6 @@
 //             [--optimal-bound | --bound-conformal K1 --bound-volumetric K2] --out FILE
 //             [--png FILE | --no-png] [--report FILE] [--initialization NAME] [--mu M] ...
 
-#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
@@ -33,8 +32,6 @@ struct DeformArguments {
 };
 
 /// Adds the subcommand to `app`; `arguments` is filled when it is parsed.
-CLI::App* add_deform_command(CLI::App& app, DeformArguments& arguments);
-
 /// The options, parsed and validated. Throws InvalidArgumentError naming the option and its
 /// value (a bound that is not a number > 1 or inf, --optimal-bound with a bound, ...).
 DeformOptions deform_options(const DeformArguments& arguments);

@@ -7,7 +7,6 @@
 #include <optional>
 
 #include "frontends/cli/cli_support.h"
-#include "frontends/cli/option_checks.h"
 #include "frontends/cli/output_plan.h"
 #include "frontends/cli/runtime_settings.h"
 #include "frontends/map/map_solve.h"
@@ -20,23 +19,6 @@
 #include "optim/errors.h"
 
 namespace sa::cli {
-
-CLI::App* add_demo_command(CLI::App& app, DemoArguments& a) {
-    CLI::App* demo = app.add_subcommand(
-        "demo", "Figure 1 in miniature: a folded harmonic map of a square onto a star, repaired");
-    demo->add_option("--out-dir", a.out_dir, "folder for the .vtu files and their pictures (.png)")
-        ->capture_default_str();
-    demo->add_option("--size", a.size, "grid cells per side")
-        ->check(CLI::Range(4, 400))
-        ->capture_default_str();
-    add_threads_option(*demo, a.threads);
-    demo->add_option("--initialization", a.initialization,
-                     "the disassembly's projection (as in sa map): similarity (default), "
-                     "rotation, identity, random or bounded:K (the paper's Figure 6)");
-    demo->add_flag("--no-png", a.no_png, "do not draw the pictures");
-    add_force_and_quiet(*demo, a.force, a.quiet, "overwrite existing files in the folder");
-    return demo;
-}
 
 namespace {
 

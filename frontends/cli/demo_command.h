@@ -5,7 +5,6 @@
 // Writes the three maps as .vtu files, a picture of each beside it (.png: the layout coloured by
 // conformal distortion, foldovers in red) and prints foldovers, distortion and time.
 
-#include <CLI/CLI.hpp>
 #include <string>
 
 namespace sa::cli {
@@ -18,7 +17,6 @@ struct DemoArguments {
     bool force = false, quiet = false, no_png = false;
 };
 
-CLI::App* add_demo_command(CLI::App& app, DemoArguments& arguments);
 /// 0 when both maps are verified inversion-free.
 int run_demo_command(const DemoArguments& arguments);
 

@@ -5,7 +5,6 @@
 #include <optional>
 
 #include "frontends/cli/cli_support.h"
-#include "frontends/cli/option_checks.h"
 #include "frontends/cli/out_of_memory.h"
 #include "frontends/cli/output_plan.h"
 #include "frontends/cli/runtime_settings.h"
@@ -30,105 +29,6 @@ double parse_bound(const std::string& text) {
     } catch (const std::exception&) {
     }
     throw InvalidArgumentError("--bound " + text + ": expected a number > 1 or 'inf'");
-}
-
-CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
-    CLI::App* map = app.add_subcommand(
-        "map", "Inversion-free map of a 2D/3D mesh with handles (Simplex Assembly)");
-    map->add_option(
-           "--rest", a.rest,
-           "rest mesh (.obj .off .ply .stl .vtk .vtu .mesh .node/.ele) or a plain-text problem "
-           "file carrying its initial map and handles")
-        ->required();
-    map->add_option(
-        "--init", a.init,
-        "initial map: a mesh file with the same vertices, result records (resV) or a problem file");
-    map->add_option("--handles", a.handles,
-                    "handle vertices, 0-based indices (default: those of the problem file)");
-    map->add_option(
-        "--targets", a.targets,
-        "positions whose rows at the handles are their targets (default: the initial map); "
-        "without --init the initial map is the rest shape with the handles moved there");
-    map->add_option("--distortion", a.distortion,
-                    "distortion in the barrier: conformal, volumetric or isometric")
-        ->capture_default_str();
-    map->add_option("--bound", a.bound, "bound K on that distortion, a number > 1 or inf")
-        ->capture_default_str();
-    map->add_option(
-           "--energy", a.energy,
-           "mapping energy E_m: none or a distortion (difference = |A - A0|^2 to the initial map)")
-        ->capture_default_str();
-    map->add_option("--mu", a.mu, "weight of E_m")
-        ->check(number_at_least(0.0))
-        ->capture_default_str();
-    map->add_option("--s", a.s, "s in the barrier's exp(s d)")
-        ->check(number_at_least(0.0, true))
-        ->capture_default_str();
-    map->add_option("--lambda-max", a.lambda_max,
-                    "largest weight of the assembly terms (section 4.4)")
-        ->check(number_at_least(SimplexAssemblyOptions{}.lambda_min))
-        ->capture_default_str();
-    map->add_option("--variant", a.variant,
-                    "r (reduced, default), f (full) or v (vertex variables)")
-        ->capture_default_str();
-    map->add_option(
-        "--initialization", a.initialization,
-        "initial linear parts: similarity, rotation, identity, random or bounded:K (the "
-        "closest with sigma_max/sigma_min <= K; default: similarity for conformal, rotation "
-        "otherwise)");
-    map->add_option("--seed", a.seed, "seed of --initialization random")
-        ->check(integer_at_least(0))
-        ->capture_default_str();
-    add_max_iterations_option(*map, a.max_iterations, "Newton iterations at most");
-    add_max_time_option(*map, a.max_time, "the solve (checked after each iteration)");
-    add_threads_option(*map, a.threads);
-    map->add_option(
-           "--out", a.out,
-           "output map: .vtu .vtk .obj .off .mesh .node; other names get result records (resV)")
-        ->required();
-    add_picture_options(*map, a.png, a.no_png,
-                        "a picture of the map: 2D, the initial map and the result side by side "
-                        "coloured by conformal distortion; 3D, the result's surface coloured by "
-                        "isometric distortion; inverted simplices in red");
-    map->add_option("--report", a.report, "JSON report: options, iterations, times, verification");
-    map->add_option("--record", a.record,
-                    "folder for a ParaView time series of the assembly (assembly.pvd)");
-    map->add_option("--mode", a.mode,
-                    "auto (submeshes for large meshes with few bad simplices or a fixed boundary), "
-                    "full or submesh")
-        ->capture_default_str();
-    map->add_option("--rings", a.rings, "submesh mode: rings around the bad simplices (m)")
-        ->check(integer_at_least(1))
-        ->capture_default_str();
-    map->add_option("--max-rings", a.max_rings,
-                    "submesh mode: most rings a failing region grows to (m_max)")
-        ->check(integer_at_least(1))
-        ->capture_default_str();
-    map->add_option("--max-rounds", a.max_rounds, "submesh mode: rounds after the first (l_max)")
-        ->check(integer_at_least(0))
-        ->capture_default_str();
-    map->add_option("--linear-solver", a.linear_solver,
-                    "auto (Eigen LDL^T below 2e6 factorization flops by CHOLMOD's count, CHOLMOD "
-                    "supernodal above), "
-                    "cholmod-supernodal, cholmod-simplicial or eigen-ldlt")
-        ->capture_default_str();
-    map->add_option("--projection", a.projection,
-                    "per-simplex Hessian projection: clamp (eigenvalues to 1e-8), abs, shift (the "
-                    "paper's) or none")
-        ->capture_default_str();
-    map->add_option("--translation-shift", a.translation_shift,
-                    "Hessian shift on r-SA translations, times lambda (the paper's is 1e-6)")
-        ->check(number_at_least(0.0))
-        ->capture_default_str();
-    map->add_flag(
-        "--no-vertex-stage", a.no_vertex_stage,
-        "keep the paper's schedule to its own termination at lambda_max instead of finishing in "
-        "vertex variables once assembled");
-    map->add_flag(
-        "--until-valid", a.until_valid,
-        "stop at the first map verified inversion-free (untangling only: no distortion stage)");
-    add_force_and_quiet(*map, a.force, a.quiet);
-    return map;
 }
 
 namespace {

@@ -3,7 +3,6 @@
 // handles; writes the result, a picture of it (frontends/output/map_picture.h), a JSON report
 // and, optionally, the iterations for ParaView.
 
-#include <CLI/CLI.hpp>
 #include <memory>
 #include <string>
 
@@ -26,8 +25,6 @@ struct MapArguments {
 };
 
 /// Adds the subcommand to `app`; `arguments` is filled when it is parsed.
-CLI::App* add_map_command(CLI::App& app, MapArguments& arguments);
-
 /// Runs it: 0 for a verified success, 1 when the result did not pass verification. Bad input
 /// throws (InputError, InvalidArgumentError) before any output is written.
 int run_map_command(const MapArguments& arguments);

@@ -8,7 +8,6 @@
 
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/map_command.h"
-#include "frontends/cli/option_checks.h"
 #include "frontends/cli/out_of_memory.h"
 #include "frontends/cli/output_plan.h"
 #include "frontends/cli/runtime_settings.h"
@@ -30,70 +29,6 @@ namespace {
 const std::vector<std::string> kInitialMaps = {"lscm", "tutte", "tutte-uniform", "harmonic"};
 
 }  // namespace
-
-CLI::App* add_param_command(CLI::App& app, ParamArguments& a) {
-    CLI::App* param = app.add_subcommand(
-        "param", "Planar parameterization of a disk-topology surface (Simplex Assembly)");
-    param
-        ->add_option("--mesh", a.mesh,
-                     "the surface: .obj .off .ply .stl .vtk .vtu .mesh (a disk: one boundary loop)")
-        ->required();
-    param
-        ->add_option(
-            "--init", a.init,
-            "initial map: lscm (free boundary), tutte (mean-value weights, circle), tutte-uniform, "
-            "harmonic (cotangent, circle), or a file (an OBJ's vt, or positions)")
-        ->capture_default_str();
-    param->add_option("--distortion", a.distortion, "conformal or isometric")
-        ->capture_default_str();
-    param->add_option("--bound", a.bound, "bound K on that distortion, a number > 1 or inf")
-        ->capture_default_str();
-    param->add_flag(
-        "--optimal-bound", a.optimal_bound,
-        "rounds that take the largest distortion as the next bound until it stops improving (5.1)");
-    param
-        ->add_option("--optimal-bound-rounds", a.optimal_bound_rounds,
-                     "most rounds of --optimal-bound (default 20)")
-        ->check(integer_at_least(1))
-        ->needs("--optimal-bound");
-    param
-        ->add_option("--optimal-bound-tolerance", a.optimal_bound_tolerance,
-                     "--optimal-bound stops when a round lowers the largest distortion K by less "
-                     "than this share of K - 1")
-        ->check(CLI::Range(0.0, 0.5))
-        ->capture_default_str()
-        ->needs("--optimal-bound");
-    param
-        ->add_option("--energy", a.energy,
-                     "E_m: difference (area-weighted |A - A0|^2 to the initial map), lscm, or none")
-        ->capture_default_str();
-    param->add_option("--mu", a.mu, "weight of E_m")
-        ->check(number_at_least(0.0))
-        ->capture_default_str();
-    param->add_flag(
-        "--free-boundary-injective", a.free_boundary_injective,
-        "keep every boundary angle sum below 2 pi (the barrier E_theta of 5.1; full mode)");
-    param->add_flag("--no-fallback", a.no_fallback,
-                    "keep the requested start's result even when it does not verify (no restart "
-                    "from a Tutte map)");
-    param->add_option("--mode", a.mode, "auto, full or submesh")->capture_default_str();
-    add_threads_option(*param, a.threads);
-    add_max_iterations_option(*param, a.max_iterations, "Newton iterations at most, per stage");
-    add_max_time_option(
-        *param, a.max_time,
-        "the whole solve (every stage, fallback and bound round takes what is left)");
-    param
-        ->add_option("--out", a.out,
-                     "the surface with its map: .obj (vt per vertex) or .vtu/.vtk (point data uv)")
-        ->required();
-    param->add_option("--layout", a.layout, "the UV layout as .vtu/.vtk, with per-face distortion");
-    add_picture_options(
-        *param, a.png, a.no_png,
-        "a picture of the UV layout coloured by conformal distortion, inverted triangles in red");
-    param->add_option("--report", a.report, "JSON report");
-    add_force_and_quiet(*param, a.force, a.quiet);
-    return param;
-}
 
 int run_param_command(const ParamArguments& a) {
     Stopwatch total;
@@ -315,18 +250,6 @@ int run_param_command(const ParamArguments& a) {
               << (a.report.empty() ? "" : ", " + a.report) << "\n";
     picture.warn(std::cerr);
     return r.success ? kExitVerified : kExitNotVerified;
-}
-
-CLI::App* add_subdivide_command(CLI::App& app, SubdivideArguments& a) {
-    CLI::App* sub =
-        app.add_subcommand("subdivide", "Loop subdivision of a triangle mesh (OpenMesh)");
-    sub->add_option("--mesh", a.mesh, "triangle mesh")->required();
-    sub->add_option("--levels", a.levels, "each level multiplies the triangles by 4")
-        ->check(CLI::Range(0, 8))
-        ->capture_default_str();
-    sub->add_option("--out", a.out, "output mesh (.obj .off .vtu .vtk .mesh)")->required();
-    sub->add_flag("--force", a.force, "overwrite an existing output");
-    return sub;
 }
 
 int run_subdivide_command(const SubdivideArguments& a) {

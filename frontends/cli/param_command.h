@@ -2,7 +2,6 @@
 // `sa param`: a planar parameterization of a disk-topology surface (sections 5.1 and 5.2), and
 // `sa subdivide`: Loop subdivision, to build large test meshes.
 
-#include <CLI/CLI.hpp>
 #include <string>
 
 #include "optim/types.h"
@@ -19,7 +18,6 @@ struct ParamArguments {
     bool no_fallback = false, no_png = false;
 };
 
-CLI::App* add_param_command(CLI::App& app, ParamArguments& arguments);
 /// 0 for a verified parameterization (inversion-free, within the bound, and with the boundary
 /// barrier every boundary angle sum below 2 pi).
 int run_param_command(const ParamArguments& arguments);
@@ -30,7 +28,6 @@ struct SubdivideArguments {
     bool force = false;
 };
 
-CLI::App* add_subdivide_command(CLI::App& app, SubdivideArguments& arguments);
 int run_subdivide_command(const SubdivideArguments& arguments);
 
 }  // namespace sa::cli

@@ -7,7 +7,6 @@
 
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/map_command.h"
-#include "frontends/cli/option_checks.h"
 #include "frontends/cli/out_of_memory.h"
 #include "frontends/output/map_report.h"
 #include "frontends/polycube/polycube_output.h"
@@ -38,42 +37,6 @@ std::string polycube_picture_title(const PolycubeVerification& verification) {
 }
 
 }  // namespace
-
-CLI::App* add_polycube_command(CLI::App& app, PolycubeArguments& a) {
-    CLI::App* polycube = app.add_subcommand(
-        "polycube", "PolyCube map of a tetrahedral mesh (Simplex Assembly, section 5.3)");
-    polycube->add_option("--mesh", a.mesh, "the tetrahedral mesh: .mesh .vtk .vtu .node/.ele")
-        ->required();
-    polycube->add_option(
-        "--labels", a.labels,
-        "the boundary's labels: one per tet facet (.flags, label / 2 = axis; the side is taken "
-        "from the geometry), or one per triangle of --label-surface; computed when absent");
-    polycube->add_option("--label-surface", a.label_surface,
-                         "the boundary surface (.obj) that per-triangle --labels refer to");
-    polycube->add_flag("--keep-orientation", a.keep_orientation,
-                       "computed labels in the input's own axes (by default the mesh is "
-                       "labelled turned so that its boundary faces the axes best)");
-    polycube->add_flag("--keep-turning-boundaries", a.keep_turning_boundaries,
-                       "computed labels whose chart boundaries turn back along their PolyCube "
-                       "edge are kept as they are (by default patches are relabelled to remove "
-                       "the reversals)");
-    polycube->add_option("--bound", a.bound, "bound K on the conformal distortion, > 1 or inf")
-        ->capture_default_str();
-    polycube->add_flag("--optimal-bound", a.optimal_bound,
-                       "rounds that take the largest distortion as the next bound (5.1)");
-    polycube
-        ->add_option("--out", a.out,
-                     "the mapped mesh (.mesh); OUT.rest.mesh and OUT.flags are written beside it")
-        ->required();
-    polycube->add_option("--vtu", a.vtu, "the map with per-tet distortion and facet labels");
-    add_picture_options(*polycube, a.png, a.no_png,
-                        "a picture of the PolyCube coloured by conformal distortion");
-    polycube->add_option("--report", a.report, "JSON report");
-    add_max_time_option(*polycube, a.max_time, "the solve (every bound round takes what is left)");
-    add_threads_option(*polycube, a.threads);
-    add_force_and_quiet(*polycube, a.force, a.quiet);
-    return polycube;
-}
 
 PolycubePlan check_polycube_arguments(const PolycubeArguments& a) {
     PolycubePlan plan;

@@ -14,7 +14,6 @@
 //               [--png P.png | --no-png]
 //               [--report R.json] [--max-time S] [--threads N] [--force] [--quiet]
 
-#include <CLI/CLI.hpp>
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -34,8 +33,6 @@ struct PolycubeArguments {
 };
 
 /// Adds the `polycube` subcommand to `app`, filling `arguments` when parsed.
-CLI::App* add_polycube_command(CLI::App& app, PolycubeArguments& arguments);
-
 /// The checked arguments.
 struct PolycubePlan {
     std::string mesh;

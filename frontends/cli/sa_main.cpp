@@ -20,6 +20,7 @@
 #include <system_error>
 
 #include "frontends/cli/cli_support.h"
+#include "frontends/cli/command_options.h"
 #include "frontends/cli/deform_command.h"
 #include "frontends/cli/demo_command.h"
 #include "frontends/cli/interruption.h"

@@ -7,7 +7,6 @@
 #include <sstream>
 
 #include "frontends/cli/cli_support.h"
-#include "frontends/cli/option_checks.h"
 #include "frontends/cli/out_of_memory.h"
 #include "frontends/cli/output_plan.h"
 #include "frontends/cli/runtime_settings.h"
@@ -80,46 +79,6 @@ nlohmann::json verified_json(const VerifiedSeamlessMap& m) {
 }
 
 }  // namespace
-
-CLI::App* add_seamless_command(CLI::App& app, SeamlessArguments& a) {
-    CLI::App* cmd = app.add_subcommand(
-        "seamless",
-        "Seamless parameterization from a frame field made integrable by Simplex Assembly");
-    cmd->add_option("--mesh", a.mesh, "the surface: .obj .off .ply .stl .vtk .vtu (triangles)")
-        ->required();
-    cmd->add_option("--field", a.field,
-                    "per-face frame or cross field: libigl .dmat (ASCII or binary) or "
-                    ".crossfield, or Directional .rawfield (N = 4); faces it leaves free are "
-                    "filled by the smoothest cross field. "
-                    "Without it (and without --constraints), the smoothest cross field");
-    cmd->add_option("--constraints", a.constraints,
-                    "libigl's pair B.dmat BC.dmat: constrained faces and their vectors; the "
-                    "smoothest cross field through them")
-        ->expected(2);
-    cmd->add_option("--scale", a.scale,
-                    "H: mesh length per unit of (u, v), one checkerboard square (default: 1/30 of "
-                    "the bounding-box diagonal)")
-        ->check(number_at_least(0.0, true));
-    cmd->add_option("--mu", a.mu, "weight of E_m = |phi' - phi|^2")
-        ->check(number_at_least(0.0))
-        ->capture_default_str();
-    add_threads_option(*cmd, a.threads);
-    add_max_iterations_option(*cmd, a.max_iterations, "Newton iterations at most");
-    add_max_time_option(
-        *cmd, a.max_time,
-        "the whole run (the field's assembly and its local repairs take what is left)");
-    cmd->add_option("--out", a.out, "the surface with per-corner texture coordinates (.obj)")
-        ->required();
-    cmd->add_option("--vtu", a.vtu,
-                    "the cut surface for ParaView: uv, fields, curls, distortion (default: --out "
-                    "with .vtu)");
-    cmd->add_flag("--no-vtu", a.no_vtu, "do not write the .vtu");
-    add_picture_options(*cmd, a.png, a.no_png,
-                        "the surface textured with a checkerboard of (u, v), rendered with VTK");
-    cmd->add_option("--report", a.report, "JSON report");
-    add_force_and_quiet(*cmd, a.force, a.quiet);
-    return cmd;
-}
 
 int run_seamless_command(const SeamlessArguments& a) {
     Stopwatch total, stage;

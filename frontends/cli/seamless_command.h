@@ -2,7 +2,6 @@
 // `sa seamless`: a seamless parameterization of a surface from a frame field, made integrable by
 // Simplex Assembly (the paper's 5.2, "Global seamless parameterizations").
 
-#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
@@ -19,7 +18,6 @@ struct SeamlessArguments {
     bool no_vtu = false, no_png = false, force = false, quiet = false;
 };
 
-CLI::App* add_seamless_command(CLI::App& app, SeamlessArguments& arguments);
 /// 0 for a verified seamless map (seamless_parameterization.h), 1 otherwise.
 int run_seamless_command(const SeamlessArguments& arguments);
 

@@ -3,9 +3,11 @@
 #include "frontends/cli/deform_command.h"
 
 #include <gtest/gtest.h>
+#include <CLI/CLI.hpp>
 
 #include <filesystem>
 
+#include "frontends/cli/command_options.h"
 #include "geometry/io/mesh_file.h"
 #include "geometry/mesh_generators.h"
 #include "optim/errors.h"

@@ -2,12 +2,14 @@
 
 #include <gtest/gtest.h>
 #include <unistd.h>
+#include <CLI/CLI.hpp>
 
 #include <filesystem>
 #include <fstream>
 
 #include "../geometry/polycube_fixtures.h"
 #include "frontends/cli/cli_support.h"
+#include "frontends/cli/command_options.h"
 #include "frontends/polycube/polycube_output.h"
 #include "geometry/cube_cover.h"
 #include "geometry/io/medit_io.h"
