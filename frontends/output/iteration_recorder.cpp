@@ -3,6 +3,7 @@
 #include <Eigen/SVD>
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 
 #include "frontends/output/map_output.h"
 #include "geometry/io/atomic_file.h"
@@ -12,8 +13,19 @@
 namespace sa {
 
 namespace {
+
 constexpr const char* kSeries = "assembly.pvd";
+
+// det and the ratio of the largest to the smallest singular value of a D x D matrix (D = 2, 3).
+template <int D>
+std::pair<double, double> determinant_and_conformal(const Eigen::MatrixXd& dynamic) {
+    const Eigen::Matrix<double, D, D> m = dynamic;
+    const Eigen::Vector<double, D> sigma =
+        Eigen::JacobiSVD<Eigen::Matrix<double, D, D>>(m).singularValues();
+    return {m.determinant(), sigma(0) / sigma(D - 1)};
 }
+
+}  // namespace
 
 IterationRecorder::IterationRecorder(std::string folder, const SimplicialMesh& mesh, bool overwrite)
     : folder_(std::move(folder)), mesh_(mesh) {
@@ -58,9 +70,10 @@ void IterationRecorder::record(int iteration, const Eigen::MatrixXd& corners) {
         for (int a = 0; a < d; ++a) {
             image.col(a) = (corners.row(k * s + a + 1) - corners.row(k * s)).transpose();
         }
-        const Eigen::JacobiSVD<Eigen::MatrixXd> svd(image);
-        det.values(s) = image.determinant();
-        conformal.values(s) = svd.singularValues()(0) / svd.singularValues()(d - 1);
+        const auto [determinant, ratio] =
+            d == 2 ? determinant_and_conformal<2>(image) : determinant_and_conformal<3>(image);
+        det.values(s) = determinant;
+        conformal.values(s) = ratio;
         double g = 0.0;
         for (int a = 0; a < k; ++a)
             g = std::max(g, (corners.row(k * s + a) - mean.row(mesh_.simplices(s, a))).norm());
