@@ -99,6 +99,10 @@ class MeditReader {
         for (int i = 0; i < num_vertices; ++i)
             for (int j = 0; j < mesh.vertices.cols(); ++j)
                 mesh.vertices(i, j) = coordinates_[3 * i + j];
+        // Every section's rows must name vertices of the file, the section not kept included (the
+        // boundary Triangles of a tet mesh): a row out of range is a damaged file.
+        check_vertex_range(tetrahedra_, 4, num_vertices);
+        check_vertex_range(triangles_, 3, num_vertices);
         const bool use_tets =
             !tetrahedra_.lines.empty() || (tetrahedra_.present && triangles_.lines.empty());
         const Elements& elements = use_tets ? tetrahedra_ : triangles_;
@@ -106,19 +110,24 @@ class MeditReader {
         const int count = static_cast<int>(elements.lines.size());
         mesh.simplices.resize(count, k);
         for (int e = 0; e < count; ++e) {
-            for (int c = 0; c < k; ++c) {
-                const int v = elements.indices[k * e + c];
-                if (v < 1 || v > num_vertices)
-                    reader_.fail_at(elements.lines[e], "vertex " + std::to_string(v) +
-                                                           " out of range [1, " +
-                                                           std::to_string(num_vertices) + "]");
-                mesh.simplices(e, c) = v - 1;
-            }
+            for (int c = 0; c < k; ++c) mesh.simplices(e, c) = elements.indices[k * e + c] - 1;
         }
         return result;
     }
 
   private:
+    void check_vertex_range(const Elements& elements, int k, int num_vertices) const {
+        for (std::size_t e = 0; e < elements.lines.size(); ++e) {
+            for (int c = 0; c < k; ++c) {
+                const int v = elements.indices[k * e + c];
+                if (v > num_vertices)
+                    reader_.fail_at(elements.lines[e], "vertex " + std::to_string(v) +
+                                                           " out of range [1, " +
+                                                           std::to_string(num_vertices) + "]");
+            }
+        }
+    }
+
     // The value after a keyword (possibly on the next line).
     std::string_view value(const char* keyword) {
         std::string_view token;

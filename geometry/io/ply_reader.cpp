@@ -87,6 +87,7 @@ class PlyParser {
         num_vertices_ = vertex_element->count;
         MeshFile result;
         for (const Element& element : elements_) read_element(element, result);
+        check_end_of_body();
         result.mesh.simplices.resize(static_cast<Eigen::Index>(triangles_.size() / 3), 3);
         for (std::size_t i = 0; i < triangles_.size(); ++i)
             result.mesh.simplices(static_cast<Eigen::Index>(i / 3), static_cast<int>(i % 3)) =
@@ -245,6 +246,21 @@ class PlyParser {
                 }
             }
         }
+    }
+
+    /// Nothing but whitespace may follow the last element's rows: rows beyond the header's count
+    /// (a face element whose count was not updated, text appended to the file) would otherwise
+    /// be dropped without a word, and the mesh read with a hole.
+    void check_end_of_body() {
+        const std::string_view rest = in_.bytes().substr(in_.position());
+        const std::size_t data = rest.find_first_not_of(" \t\r\n\f\v");
+        if (data == std::string_view::npos) return;
+        const Element& last = elements_.back();
+        const std::string declared = "unexpected data after the PLY body (element '" + last.name +
+                                     "' declares " + std::to_string(last.count) +
+                                     (last.count == 1 ? " row)" : " rows)");
+        if (binary_) fail(declared + ": " + std::to_string(rest.size() - data) + " more bytes");
+        fail(declared + ": " + io::quoted_bytes(in_.next_token()));
     }
 
     double number(const io::BinaryType& type, const std::string& what) {

@@ -595,6 +595,15 @@ std::vector<Case> catalogue() {
          "param --mesh {D}/m.mesh --out {D}/uv.obj",
          2,
          {"{D}/m.mesh:10: vertex 4 out of range"}},
+        {"MeditBoundaryTriangleOutOfRange",  // beside valid tets, in the section not kept
+         [](const Inputs& in) {
+             in.text("m.mesh",
+                     "MeshVersionFormatted 2\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 "
+                     "0\n0 0 1 0\nTetrahedra\n1\n1 2 3 4 0\nTriangles\n1\n1 2 999 0\nEnd\n");
+         },
+         "deform --rest {D}/m.mesh --targets {D}/m.mesh --out {D}/o.vtu",
+         2,
+         {"{D}/m.mesh:14: vertex 999 out of range [1, 4]"}},
         {"TetgenRowOutOfSequence",
          [](const Inputs& in) {
              in.text("t.node", "2 3 0 0\n0 0 0 0\n5 1 0 0\n");
@@ -652,6 +661,18 @@ std::vector<Case> catalogue() {
          "param --mesh {D}/p.ply --out {D}/uv.obj",
          2,
          {"{D}/p.ply:14: face 0 with 4 vertices; only triangles"}},
+        {"PlyMoreFacesThanDeclared",  // the second face is no hole in a one-face mesh
+         [](const Inputs& in) {
+             in.text("p.ply",
+                     "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float "
+                     "y\nproperty float z\nelement face 1\nproperty list uchar int "
+                     "vertex_indices\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n"
+                     "3 0 2 3\n");
+         },
+         "param --mesh {D}/p.ply --out {D}/uv.obj",
+         2,
+         {"{D}/p.ply:15: unexpected data after the PLY body (element 'face' declares 1 row): "
+          "'3'"}},
         {"PlyPropertyBeforeElement",
          [](const Inputs& in) {
              in.text("p.ply",

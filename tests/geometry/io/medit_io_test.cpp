@@ -109,6 +109,10 @@ TEST(MeditIo, MalformedFilesNameTheFileAndLine) {
                            {"vertex.mesh:4:", "expected 4 numbers (x y z ref)", "found 3"}));
     EXPECT_TRUE(throws_input_error(read("range.mesh", v + "Tetrahedra\n1\n1 2 3 4 0\n"),
                                    {"range.mesh:10: vertex 4 out of range [1, 3]"}));
+    // The boundary Triangles beside tets are not kept, and checked all the same.
+    EXPECT_TRUE(throws_input_error(
+        read("boundary.mesh", v + "Tetrahedra\n1\n1 2 3 1 0\nTriangles\n1\n1 2 999 0\n"),
+        {"boundary.mesh:13: vertex 999 out of range [1, 3]"}));
     EXPECT_TRUE(throws_input_error(read("zero.mesh", v + "Triangles\n1\n0 1 2 0\n"),
                                    {"zero.mesh:10:", "vertex 0"}));
     EXPECT_TRUE(throws_input_error(read("count.mesh", v + "Triangles\n2\n1 2 3 0\nEnd\n"),

@@ -84,6 +84,29 @@ TEST(PlyIo, ReadsBinaryPlyInBothByteOrders) {
     }
 }
 
+// A binary body with one face more than its header declares is refused at the first byte past
+// the declared rows; a final newline after them is not data.
+TEST(PlyIo, BinaryRowsBeyondTheHeadersCountAreRefused) {
+    TempFolder folder;
+    const std::string header =
+        "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\n"
+        "property float y\nproperty float z\nelement face 1\n"
+        "property list uchar int vertex_indices\nend_header\n";
+    std::string body;
+    for (int v = 0; v < 4; ++v) body += binary<float>({float(v % 2), float(v / 2), 0.0f}, false);
+    const std::string face =
+        binary<std::uint8_t>({3}, false) + binary<std::int32_t>({0, 1, 2}, false);
+    const std::string extra =
+        binary<std::uint8_t>({3}, false) + binary<std::int32_t>({1, 3, 2}, false);
+    EXPECT_EQ(read_ply(folder.write("one.ply", header + body + face + "\n")).mesh.simplices.rows(),
+              1);
+    const std::string offset = std::to_string(header.size() + body.size() + face.size());
+    EXPECT_TRUE(throws_input_error(
+        [&] { read_ply(folder.write("two.ply", header + body + face + extra)); },
+        {"two.ply: byte " + offset +
+         ": unexpected data after the PLY body (element 'face' declares 1 row): 13 more bytes"}));
+}
+
 // Faces are kept as the file lists them (three triangles on one edge included: the front-ends
 // check the topology they need).
 TEST(PlyIo, KeepsFacesAsListed) {
@@ -154,6 +177,11 @@ TEST(PlyIo, MalformedFilesAreNamedWithTheirLineAndNothingIsPrinted) {
                   "0 0 0\n1 0 0\n0 1 0\n",
          "12: the PLY body is cut short: element 'face' declares 2000000000 rows"},
         {ply("0 0 0\n", 4, "", 0), "11: the PLY body is cut short: element 'vertex' declares 4"},
+        // More rows than the header declares, or text after the last one: not a smaller mesh.
+        {ply(kSquare, 4, "3 0 1 2\n3 0 2 3\n", 1),
+         "16: unexpected data after the PLY body (element 'face' declares 1 row): '3'"},
+        {ply(kSquare, 4, "3 0 1 2\n3 0 2 3\n", 2) + "\n  made by hand\n",
+         "18: unexpected data after the PLY body (element 'face' declares 2 rows): 'made'"},
     };
     testing::internal::CaptureStderr();
     testing::internal::CaptureStdout();
