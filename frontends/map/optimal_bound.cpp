@@ -32,6 +32,10 @@ std::shared_ptr<const SimplexTermBase> with_bound(const SimplexTermBase& energy,
 /// rotation, where every measure bounded here is least: 1 for conformal K) and by more than the
 /// rounds' `margin` of it (gains under the slack each next bound gets are not progress). Relative
 /// to K alone, a round that lowers K - 1 from 3.5e-4 to 2.6e-4 counted as no progress.
+/// Largest distortions within this share of the identity's are the identity's: computed from
+/// positions, a map that is a similarity on every simplex gives 1 + a few ulps, not 1.
+constexpr double kIdentityRoundOff = 1e-9;
+
 bool lowered(double before, double after, double identity, double tolerance, double margin) {
     const double distance = before - identity > 0.0 ? before - identity : before;
     const double gain = before - after;
@@ -112,20 +116,41 @@ OptimalBound run_rounds(MappingProblem problem, SimplexAssemblyOptions options,
                 options.mode = SolveMode::kSubmesh;
                 options.submesh_band = rounds.submesh_band;
             }
+            // A largest distortion at the identity's (the map a similarity, or a rotation, on
+            // every simplex), to round-off, is the least any map has: its bound stays, as no
+            // bound can be below it and one a few ulps above leaves the barrier no room. When
+            // every one is there, the bound is optimal and the rounds end.
+            const auto above_identity = [](double K, double identity) {
+                return K > identity * (1.0 + kIdentityRoundOff);
+            };
             std::string bounds;
+            bool lowerable = false;
             if (options.builtin_energy) {
-                options.bound = previous.max_distortion * (1.0 + rounds.margin);
-                bounds = "K = " + std::to_string(options.bound);
+                const double K = previous.max_distortion * (1.0 + rounds.margin);
+                if (above_identity(K, builtin_identity)) {
+                    options.bound = K;
+                    bounds = "K = " + std::to_string(K);
+                    lowerable = true;
+                }
             }
             std::size_t k = 0;
             for (auto& energy : problem.energies) {
                 // previous.bounds lists the barriers on a distortion in the problem's order.
                 if (!bounds_a_distortion(*energy) || k >= previous.bounds.size()) continue;
                 const double K = previous.bounds[k].max_distortion * (1.0 + rounds.margin);
-                energy = with_bound(*energy, K);
-                bounds +=
-                    (bounds.empty() ? "" : ", ") + energy->name() + " K = " + std::to_string(K);
+                if (above_identity(K, own_identity[k])) {
+                    energy = with_bound(*energy, K);
+                    bounds +=
+                        (bounds.empty() ? "" : ", ") + energy->name() + " K = " + std::to_string(K);
+                    lowerable = true;
+                }
                 ++k;
+            }
+            if (!lowerable) {
+                log_line(observer.logger,
+                         "optimal bound: every largest distortion is the "
+                         "identity's; no lower bound exists");
+                break;
             }
             log_line(observer.logger,
                      "optimal bound: round " + std::to_string(round) + ", " + bounds);

@@ -178,6 +178,21 @@ TEST(PolycubeSolve, SolveFromTheCubeCoverIsVerifiedWithAndWithoutTheOptimalBound
     EXPECT_THROW(solve_polycube(prepared, both), InvalidArgumentError);
 }
 
+// The L-shaped block unbent is its own PolyCube: the first round's map is exact (conformal
+// distortion 1, the least there is), no bound can be below it, and the rounds end there with the
+// map verified instead of asking for a bound of 1.
+TEST(PolycubeSolve, AnExactMapEndsTheOptimalBoundRounds) {
+    const PreparedPolycube prepared =
+        prepared_shape(testing::voxel_tetrahedra(testing::l_shape(), 2));
+    PolycubeSolveOptions rounds;
+    rounds.optimal_bound = true;
+    rounds.rounds = 3;
+    const PolycubeSolve exact = solve_polycube(prepared, rounds);
+    ASSERT_TRUE(exact.success) << exact.message;
+    EXPECT_LE(exact.verification.quality.conformal.max, 1.0 + 1e-9);
+    EXPECT_EQ(exact.rounds.size(), 1u);
+}
+
 // A box whose top and bottom centres are in many tetrahedra (48 before the splits): every
 // boundary vertex and edge has its angle barrier (the log counts them and their largest stars),
 // and the map is verified (the angle sums measured at every vertex).
