@@ -5,7 +5,6 @@
 
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/out_of_memory.h"
-#include "frontends/cli/runtime_settings.h"
 #include "frontends/deform/deform_solve.h"
 #include "frontends/output/map_output.h"
 #include "frontends/output/map_report.h"
@@ -181,7 +180,6 @@ int run_deform_command(const DeformArguments& a) {
     const DeformOptions options = deform_options(a);
     OutputPlan plan(a.force);
     PictureOutput picture = plan_deform_files(a, plan);
-    reserve_blas_buffer();
     const DeformInput input = read_deform_input(a);
     for (const std::string& warning : input.warnings)
         std::cerr << "sa: warning: " << one_line(warning) << '\n';

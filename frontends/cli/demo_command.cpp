@@ -8,7 +8,6 @@
 
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/output_plan.h"
-#include "frontends/cli/runtime_settings.h"
 #include "frontends/map/map_solve.h"
 #include "frontends/output/layout_picture.h"
 #include "frontends/output/map_output.h"
@@ -73,7 +72,6 @@ int run_demo_command(const DemoArguments& a) {
     for (const std::string& path : vtus) plan.file("--out-dir", path);
     for (const std::string& path : pngs) plan.file("--out-dir", path);
     plan.check();
-    reserve_blas_buffer();
     plan.open_folders();
 
     // The square's boundary, counter-clockwise from (0, 0), onto the star by arc length.

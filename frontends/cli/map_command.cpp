@@ -7,7 +7,6 @@
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/out_of_memory.h"
 #include "frontends/cli/output_plan.h"
-#include "frontends/cli/runtime_settings.h"
 #include "frontends/map/map_solve.h"
 #include "frontends/output/iteration_recorder.h"
 #include "frontends/output/map_output.h"
@@ -88,7 +87,6 @@ int run_map_command(const MapArguments& a) {
     plan.file("--report", a.report);
     plan.folder("--record", a.record, {"assembly.pvd"});
     plan.check();
-    reserve_blas_buffer();
 
     MeshFile rest = read_input_mesh("--rest", a.rest);
     MappingProblem problem;

@@ -73,8 +73,8 @@ constexpr std::size_t kBlasBuffer = (std::size_t(32) << 22) + 4096;
 
 }  // namespace
 
-// Declared in runtime_settings.h; here, in the library, because every command that solves calls
-// it (and the tests link those commands without the executable's runtime settings).
+// Declared in runtime_settings.h and called by sa_main.cpp for every command that solves; here,
+// beside the out-of-memory message it leads to.
 void reserve_blas_buffer() {
     if (memory_limit() == 0) return;  // without a limit, malloc of address space does not fail
     using Allocate = void* (*)(int);

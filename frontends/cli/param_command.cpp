@@ -10,7 +10,6 @@
 #include "frontends/cli/map_command.h"
 #include "frontends/cli/out_of_memory.h"
 #include "frontends/cli/output_plan.h"
-#include "frontends/cli/runtime_settings.h"
 #include "frontends/output/layout_picture.h"
 #include "frontends/output/map_output.h"
 #include "frontends/output/map_report.h"
@@ -78,7 +77,6 @@ int run_param_command(const ParamArguments& a) {
     picture.plan(plan);
     plan.file("--report", a.report);
     plan.check();
-    reserve_blas_buffer();
 
     Stopwatch stage;
     const MeshFile file = read_input_mesh("--mesh", a.mesh, "a parameterization");

@@ -117,8 +117,7 @@ PolycubePlan check_polycube_arguments(const PolycubeArguments& a) {
 }
 
 PreparedPolycube read_polycube_input(const PolycubePlan& plan, const Logger& logger) {
-    const MeshFile file = read_mesh_file(plan.mesh);
-    for (const std::string& warning : file.warnings) log_line(logger, "warning: " + warning);
+    const MeshFile file = read_input_mesh("--mesh", plan.mesh);
     return prepare_polycube(file.mesh, plan.mesh, plan.labels, logger);
 }
 

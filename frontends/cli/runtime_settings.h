@@ -18,7 +18,8 @@ void apply_runtime_settings();
 
 /// Under a memory limit (ulimit -v or -d), has OpenBLAS take its work buffer now, or throws
 /// std::bad_alloc (the request's size noted, out_of_memory.h) when it cannot be had: OpenBLAS
-/// itself retries a failed allocation forever. For the commands that solve, before they read.
+/// itself retries a failed allocation forever. Called once, by main, before any command that
+/// solves runs (and so before it reads its input).
 /// Nothing without a limit, or when the BLAS is not OpenBLAS.
 void reserve_blas_buffer();
 

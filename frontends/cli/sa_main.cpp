@@ -108,6 +108,9 @@ int run(int argc, char** argv) {
     }
 
     try {
+        // Every command that solves, in this one place (a command added later cannot forget it):
+        // under a memory limit OpenBLAS's work buffer is taken now, or the run ends with exit 4.
+        if (!subdivide->parsed()) sa::cli::reserve_blas_buffer();
         if (map->parsed()) return sa::cli::run_map_command(map_arguments);
         if (demo->parsed()) return sa::cli::run_demo_command(demo_arguments);
         if (param->parsed()) return sa::cli::run_param_command(param_arguments);

@@ -9,7 +9,6 @@
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/out_of_memory.h"
 #include "frontends/cli/output_plan.h"
-#include "frontends/cli/runtime_settings.h"
 #include "frontends/output/checkerboard_picture.h"
 #include "frontends/output/map_output.h"
 #include "frontends/output/map_report.h"
@@ -99,7 +98,6 @@ int run_seamless_command(const SeamlessArguments& a) {
     picture.plan(plan);
     plan.file("--report", a.report);
     plan.check();
-    reserve_blas_buffer();
     SeamlessOptions options;
     options.scale = a.scale;
     options.integrable.mu = a.mu;

@@ -1181,6 +1181,32 @@ TEST(MemoryLimit, StartsOrFailsAtOnceNeverHangs) {
     }
 }
 
+// Every command that solves takes OpenBLAS's work buffer before it reads (OpenBLAS would retry
+// the allocation for ever: `sa polycube` did, below 160 MB): under a limit too low for it, each
+// ends at once with exit 4, before it even finds that its input does not exist.
+TEST(MemoryLimit, EveryCommandThatSolvesEndsAtOnceWhenTheBlasBufferCannotBeHad) {
+    if (kSanitized) GTEST_SKIP() << "the sanitizer runtime cannot run under ulimit -v";
+    const fs::path folder = fs::temp_directory_path() / ("sa_blas_" + std::to_string(::getpid()));
+    const std::string d = folder.string();
+    for (const std::string arguments :
+         {"map --rest " + d + "/p.txt --out " + d + "/o.vtu",
+          "param --mesh " + d + "/m.obj --out " + d + "/o.obj",
+          "seamless --mesh " + d + "/m.obj --out " + d + "/o.obj",
+          "polycube --mesh " + d + "/m.mesh --out " + d + "/o.mesh",
+          "deform --rest " + d + "/m.mesh --targets " + d + "/t.txt --out " + d + "/o.vtu",
+          "demo --out-dir " + d + "/demo"}) {
+        SCOPED_TRACE(arguments);
+        int status = 0;
+        const std::string text =
+            shell("ulimit -v 150000; timeout 20 " + std::string(SA_EXECUTABLE) + " " + arguments,
+                  &status);
+        ASSERT_TRUE(WIFEXITED(status)) << text;
+        EXPECT_EQ(WEXITSTATUS(status), 4) << text;
+        EXPECT_NE(text.find("out of memory while reserving OpenBLAS's"), std::string::npos) << text;
+        EXPECT_FALSE(fs::exists(folder));
+    }
+}
+
 TEST(MemoryLimit, RunningOutIsOneLineAndExitFour) {
     if (kSanitized) GTEST_SKIP() << "the sanitizer runtime cannot run under ulimit -v";
     const fs::path folder =

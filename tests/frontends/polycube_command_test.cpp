@@ -162,6 +162,12 @@ TEST_F(PolycubeCommand, EndToEndOnAGeneratedMesh) {
     const SimplicialMesh mesh =
         testing::bent(testing::voxel_tetrahedra(testing::l_shape(), 2), 0.12);
     write_medit(path("bent.mesh"), mesh.vertices, mesh.simplices);
+    {  // a section the reader skips, with a warning that --quiet keeps
+        std::ifstream in(path("bent.mesh"));
+        std::string text((std::istreambuf_iterator<char>(in)), {});
+        text.insert(text.rfind("End"), "Quadrilaterals\n1\n1 2 3 4 0\n");
+        std::ofstream(path("bent.mesh")) << text;
+    }
     CLI::App app;
     PolycubeArguments arguments;
     add_polycube_command(app, arguments);
@@ -170,7 +176,13 @@ TEST_F(PolycubeCommand, EndToEndOnAGeneratedMesh) {
                                      path("o.vtu"),  "--optimal-bound", "--quiet"};
     std::reverse(args.begin(), args.end());
     app.parse(args);
-    ASSERT_EQ(run_polycube_command(arguments), kExitVerified);
+    ::testing::internal::CaptureStderr();
+    const int status = run_polycube_command(arguments);
+    const std::string errors = ::testing::internal::GetCapturedStderr();
+    ASSERT_EQ(status, kExitVerified) << errors;
+    EXPECT_NE(errors.find("sa: warning: " + path("bent.mesh") + ": skipped 1 Quadrilaterals"),
+              std::string::npos)
+        << errors;
     for (const char* name : {"o.mesh", "o.rest.mesh", "o.flags", "o.vtu", "o.json"})
         EXPECT_TRUE(fs::exists(path(name))) << name;
     // The written map, read back, passes verify_polycube against the written rest mesh.
