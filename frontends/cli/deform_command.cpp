@@ -160,10 +160,17 @@ DeformInput read_deform_input(const DeformArguments& a) {
     input.mesh = std::move(rest.mesh);
     validate_mesh(input.mesh, a.rest);
     const int d = input.mesh.simplex_dimension();
+    // Triangles in space with z = 0 at every vertex (an OBJ or OFF stores three coordinates) are
+    // the planar mesh they are.
+    if (d == 2 && input.mesh.ambient_dimension() == 3 &&
+        (input.mesh.vertices.col(2).array() == 0.0).all()) {
+        const Eigen::MatrixXd planar = input.mesh.vertices.leftCols(2);
+        input.mesh.vertices = planar;
+    }
     if (input.mesh.ambient_dimension() != d) {
         throw InputError(a.rest +
                          ": triangles in space; deformation poses tetrahedra, or triangles in "
-                         "the plane");
+                         "the plane (z = 0 at every vertex)");
     }
     check_output_format(a.out, d);
     set_activity("reading the handles and --targets " + a.targets);

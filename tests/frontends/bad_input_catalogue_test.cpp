@@ -976,6 +976,25 @@ std::vector<Case> catalogue() {
                      "deform --rest {D}/bump.off --targets {D}/t.txt --out {D}/o.vtu",
                      2,
                      {"{D}/bump.off", "triangles in space"}});
+    // A planar mesh in a format of three coordinates (OFF), z = 0 at every vertex, posed in the
+    // plane: its right side lifted, rows `index x y`.
+    cases.push_back({"DeformPosesAPlanarOff",
+                     [](const Inputs& in) {
+                         const SimplicialMesh grid = grid_triangles(4, 4);
+                         in.mesh("plane.off", grid);
+                         std::ostringstream rows;
+                         for (Index v = 0; v < grid.num_vertices(); ++v) {
+                             const double x = grid.vertices(v, 0);
+                             if (x > 0.0 && x < 1.0) continue;
+                             rows << v << ' ' << x << ' '
+                                  << grid.vertices(v, 1) + (x > 0.5 ? 0.2 : 0.0) << '\n';
+                         }
+                         in.text("t.txt", rows.str());
+                     },
+                     "deform --rest {D}/plane.off --targets {D}/t.txt --out {D}/o.obj --quiet",
+                     0,
+                     {"success: verified"},
+                     {"o.obj", "o.png"}});
     cases.push_back({"DeformOutAndReportTheSame",
                      lifted_box,
                      "deform --rest {D}/box.mesh --targets {D}/t.txt --out {D}/o.vtu --report "
