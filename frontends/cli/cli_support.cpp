@@ -171,4 +171,14 @@ Logger stderr_logger(bool quiet) {
     return [](const std::string& line) { std::cerr << line << '\n' << std::flush; };
 }
 
+DistortionType parse_distortion_among(const std::string& option, const std::string& value,
+                                      const std::vector<DistortionType>& allowed) {
+    std::string names;
+    for (std::size_t i = 0; i < allowed.size(); ++i) {
+        if (to_string(allowed[i]) == value) return allowed[i];
+        names += (i == 0 ? "" : i + 1 == allowed.size() ? " or " : ", ") + to_string(allowed[i]);
+    }
+    throw InvalidArgumentError(option + " " + value + ": expected " + names);
+}
+
 }  // namespace sa::cli

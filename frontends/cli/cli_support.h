@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "energies/distortion.h"
 #include "geometry/io/mesh_file.h"
 #include "geometry/simplicial_mesh.h"
 #include "optim/errors.h"
@@ -48,6 +49,11 @@ auto parse_option(const std::string& option, const std::string& value, Parse&& p
         throw InvalidArgumentError(option + " " + value + ": " + e.what());
     }
 }
+
+/// The distortion named `value` of `option` when it is one of `allowed`; otherwise throws
+/// InvalidArgumentError "OPTION VALUE: expected A, B or C" listing only those.
+DistortionType parse_distortion_among(const std::string& option, const std::string& value,
+                                      const std::vector<DistortionType>& allowed);
 
 /// Throws InputError `PATH: the mesh has no vertices` (or no simplices), naming the file the mesh
 /// was read from, so that later checks (handles, fields) do not blame another file.

@@ -73,6 +73,23 @@ CLI::Validator integer_at_least(long long low) {
         rule);
 }
 
+/// A seed: an integer from 0 to 2^64 - 1 (digits only).
+CLI::Validator seed_value() {
+    const std::string rule = "an integer from 0 to 18446744073709551615";
+    return CLI::Validator(
+        [=](std::string& text) -> std::string {
+            bool digits = !text.empty();
+            for (const char c : text) digits = digits && c >= '0' && c <= '9';
+            if (digits) {
+                errno = 0;
+                std::strtoull(text.c_str(), nullptr, 10);
+                if (errno == 0) return {};
+            }
+            return "must be " + rule + ", found '" + text + "'";
+        },
+        rule);
+}
+
 /// --threads N: worker threads, 0 = all cores (an integer >= 0).
 void add_threads_option(CLI::App& command, int& threads) {
     command.add_option("--threads", threads, "worker threads, 0 = all cores")
@@ -162,7 +179,7 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
         "closest with sigma_max/sigma_min <= K; default: similarity for conformal, rotation "
         "otherwise)");
     map->add_option("--seed", a.seed, "seed of --initialization random")
-        ->check(integer_at_least(0))
+        ->check(seed_value())
         ->capture_default_str();
     add_max_iterations_option(*map, a.max_iterations, "Newton iterations at most");
     add_max_time_option(*map, a.max_time, "the solve (checked after each iteration)");

@@ -1,8 +1,10 @@
 #include "frontends/cli/map_command.h"
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <optional>
+#include <sstream>
 
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/out_of_memory.h"
@@ -47,7 +49,9 @@ std::string format_quality(const MapQuality& q) {
 int run_map_command(const MapArguments& a) {
     // Options and output locations first: a typo should not cost a solve.
     SimplexAssemblyOptions options;
-    options.distortion = parse_option("--distortion", a.distortion, parse_distortion);
+    options.distortion = parse_distortion_among(
+        "--distortion", a.distortion,
+        {DistortionType::kConformal, DistortionType::kVolumetric, DistortionType::kIsometric});
     options.bound = parse_bound(a.bound);
     if (a.energy != "none")
         options.mapping_distortion = parse_option("--energy", a.energy, parse_distortion);
@@ -67,6 +71,12 @@ int run_map_command(const MapArguments& a) {
     }
     options.projection = parse_option("--projection", a.projection, parse_projection);
     options.translation_shift = a.translation_shift;
+    if (!std::isfinite(a.translation_shift * a.lambda_max)) {
+        std::ostringstream message;
+        message << "--translation-shift " << a.translation_shift << ": times --lambda-max ("
+                << a.lambda_max << ") it is not a finite number";
+        throw InvalidArgumentError(message.str());
+    }
     options.variant = parse_option("--variant", a.variant, parse_variant);
     if (!a.initialization.empty())
         options.initialization =

@@ -33,12 +33,8 @@ int run_param_command(const ParamArguments& a) {
     Stopwatch total;
     ParameterizationOptions options;
     SimplexAssemblyOptions& solver = options.solver;
-    solver.distortion = parse_option("--distortion", a.distortion, parse_distortion);
-    if (solver.distortion != DistortionType::kConformal &&
-        solver.distortion != DistortionType::kIsometric) {
-        throw InvalidArgumentError("--distortion " + a.distortion +
-                                   ": a parameterization takes conformal or isometric");
-    }
+    solver.distortion = parse_distortion_among(
+        "--distortion", a.distortion, {DistortionType::kConformal, DistortionType::kIsometric});
     solver.bound = parse_bound(a.bound);
     if (a.energy == "difference" || a.energy == "diff") {
         solver.mapping_distortion = DistortionType::kDifference;

@@ -44,8 +44,9 @@ void AssemblyEngineOptions::validate() const {
     if (!(max_time_seconds > 0.0)) fail("max_time_seconds", max_time_seconds, "must be > 0");
     if (!(projection_epsilon >= 0.0))
         fail("projection_epsilon", projection_epsilon, "must be >= 0");
-    if (!(translation_shift >= 0.0) || !std::isfinite(translation_shift))
-        fail("translation_shift", translation_shift, "must be finite and >= 0");
+    if (!(translation_shift >= 0.0) || !std::isfinite(translation_shift * lambda_max))
+        fail("translation_shift", translation_shift,
+             "must be >= 0 and finite times lambda_max (the shift is translation_shift * lambda)");
     if (num_threads < 0) fail("num_threads", num_threads, "must be >= 0 (0 = all cores)");
 }
 
