@@ -11,6 +11,7 @@
 
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/out_of_memory.h"
+#include "geometry/io/vtk_io.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
 
@@ -155,6 +156,20 @@ void OutputPlan::check() const {
             check_folder(folder_of(f.path), f.option, f.path);
         if (fs::exists(status) && !overwrite_)
             throw InputError(f.path + " exists; pass --force to overwrite it");
+    }
+
+    // Writers that live in a plugin: found now, not after the solve.
+    for (const Entry& f : files_) {
+        const std::string format = extension(f.path);
+        if (format != ".vtu" && format != ".vtk") continue;
+        set_activity("loading the VTK file writer (libsa_vtk_io.so) for " + f.option + " " +
+                     f.path);
+        try {
+            require_vtk_io();
+        } catch (const Error& e) {
+            throw InputError(describe(f.option, f.path) + ": " + e.what());
+        }
+        break;
     }
 }
 

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <mutex>
+#include <new>
 #include <vector>
 
 #include "optim/errors.h"
@@ -53,6 +54,12 @@ void* plugin_symbol(const std::string& name, const std::string& symbol,
             if (handle != nullptr) break;
             const char* error = dlerror();
             message = error != nullptr ? error : "unknown error";
+            // The loader could not map the library or one it needs: out of address space (a
+            // memory limit), not a missing file.
+            if (message.find("failed to map segment") != std::string::npos ||
+                message.find("annot allocate memory") != std::string::npos)
+                throw std::bad_alloc();
+            if (candidate != file) break;  // this one exists: its error is the reason
         }
         if (handle == nullptr) {
             std::string tried;  // the folders, without the last candidate (the loader's search)

@@ -19,7 +19,8 @@ namespace sa {
 
 /// Loads lib<name>.so once per process and returns the address of `symbol` in it. Thread-safe.
 /// Throws Error naming the library, what it is needed for (`purpose`), the folders tried and the
-/// loader's message when the library or the symbol cannot be found.
+/// loader's message when the library or the symbol cannot be found, and std::bad_alloc when the
+/// loader cannot map it (out of address space under a memory limit).
 void* plugin_symbol(const std::string& name, const std::string& symbol, const std::string& purpose);
 
 /// The table that `symbol` of lib<name>.so returns: `const Table* symbol()`.

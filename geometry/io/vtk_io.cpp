@@ -14,6 +14,10 @@ const VtkIoFunctions& vtk_io() {
 
 }  // namespace
 
+void require_vtk_io() {
+    vtk_io();
+}
+
 MeshFile read_vtu(const std::string& path) {
     return vtk_io().read_vtu(path);
 }

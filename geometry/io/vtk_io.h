@@ -46,6 +46,11 @@ MeshFile read_vtk(const std::string& path);
 /// Reads an XML .vtu file, as read_vtk(); errors carry VTK's message.
 MeshFile read_vtu(const std::string& path);
 
+/// Loads the plugin that reads and writes VTK files (libsa_vtk_io.so), which the functions here
+/// otherwise do on first use; throws Error naming the library, the folders tried and the loader's
+/// message when it cannot be loaded. For a check before a long run that writes VTK files.
+void require_vtk_io();
+
 /// Writes a legacy ASCII .vtk unstructured grid: `positions` #V x 2 or #V x 3, `simplices`
 /// #S x 3 (VTK_TRIANGLE) or #S x 4 (VTK_TETRA, 3D only), `point_data` arrays of #V rows and
 /// `cell_data` arrays of #S rows (non-empty, distinct names). Throws InvalidArgumentError on

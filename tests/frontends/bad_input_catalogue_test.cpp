@@ -1254,6 +1254,36 @@ TEST(MemoryLimit, EveryCommandThatSolvesEndsAtOnceWhenTheBlasBufferCannotBeHad) 
     }
 }
 
+// A VTK output needs the plugin that writes it (libsa_vtk_io.so, in the lib/ beside the program's
+// bin/): a program moved away from it says so before it reads, not after the solve.
+TEST(Plugins, AMissingVtkWriterIsFoundBeforeTheSolve) {
+    if (kSanitized) GTEST_SKIP() << "the sanitized sa finds its shared libraries by their folder";
+    const fs::path folder = fs::temp_directory_path() / ("sa_moved_" + std::to_string(::getpid()));
+    fs::remove_all(folder);
+    fs::create_directories(folder / "bin");
+    fs::copy_file(SA_EXECUTABLE, folder / "bin" / "sa");
+    std::ofstream(folder / "p.txt") << grid_problem(4, grid_boundary(4));
+    const SimplicialMesh box = grid_tetrahedra(1, 1, 1);
+    write_mesh_file((folder / "box.mesh").string(), box.vertices, box.simplices);
+    const std::string d = folder.string();
+    for (const auto& [arguments, output] : std::vector<std::pair<std::string, std::string>>{
+             {"map --rest " + d + "/p.txt --out " + d + "/o.vtu", "--out " + d + "/o.vtu"},
+             {"polycube --mesh " + d + "/box.mesh --out " + d + "/o.mesh --vtu " + d + "/o.vtk",
+              "--vtu " + d + "/o.vtk"}}) {
+        SCOPED_TRACE(arguments);
+        int status = 0;
+        const std::string text = shell((folder / "bin" / "sa").string() + " " + arguments, &status);
+        ASSERT_TRUE(WIFEXITED(status)) << text;
+        EXPECT_EQ(WEXITSTATUS(status), 2) << text;
+        EXPECT_EQ(text.rfind("sa: error: " + output + ": cannot load libsa_vtk_io.so", 0), 0u)
+            << text;
+        EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+    }
+    for (const char* name : {"o.vtu", "o.vtk", "o.mesh", "o.png", "o.rest.mesh", "o.flags"})
+        EXPECT_FALSE(fs::exists(folder / name)) << name;
+    fs::remove_all(folder);
+}
+
 TEST(MemoryLimit, RunningOutIsOneLineAndExitFour) {
     if (kSanitized) GTEST_SKIP() << "the sanitizer runtime cannot run under ulimit -v";
     const fs::path folder =
