@@ -27,15 +27,15 @@ std::shared_ptr<const SimplexTermBase> with_bound(const SimplexTermBase& energy,
     return static_cast<const SimplexTerm<3>&>(energy).with_bound(K);
 }
 
+/// Largest distortions within this share of the identity's are the identity's: computed from
+/// positions, a map that is a similarity on every simplex gives 1 + a few ulps, not 1.
+constexpr double kIdentityRoundOff = 1e-9;
+
 /// Whether a round that took a largest distortion from `before` to `after` lowered it: by more
 /// than `tolerance` of its distance before to `identity` (the distortion of a similarity or a
 /// rotation, where every measure bounded here is least: 1 for conformal K) and by more than the
 /// rounds' `margin` of it (gains under the slack each next bound gets are not progress). Relative
 /// to K alone, a round that lowers K - 1 from 3.5e-4 to 2.6e-4 counted as no progress.
-/// Largest distortions within this share of the identity's are the identity's: computed from
-/// positions, a map that is a similarity on every simplex gives 1 + a few ulps, not 1.
-constexpr double kIdentityRoundOff = 1e-9;
-
 bool lowered(double before, double after, double identity, double tolerance, double margin) {
     const double distance = before - identity > 0.0 ? before - identity : before;
     const double gain = before - after;
@@ -148,8 +148,7 @@ OptimalBound run_rounds(MappingProblem problem, SimplexAssemblyOptions options,
             }
             if (!lowerable) {
                 log_line(observer.logger,
-                         "optimal bound: every largest distortion is the "
-                         "identity's; no lower bound exists");
+                         "optimal bound: every largest distortion is the identity's, the least");
                 break;
             }
             log_line(observer.logger,

@@ -1019,10 +1019,11 @@ std::vector<Case> catalogue() {
                          }
                          in.text("t.txt", rows.str());
                      },
-                     "deform --rest {D}/plane.off --targets {D}/t.txt --out {D}/o.obj --quiet",
+                     "deform --rest {D}/plane.off --targets {D}/t.txt --out {D}/o.obj --quiet "
+                     "--no-png",  // a picture renders through Mesa (run-sanitizer-tests.sh)
                      0,
                      {"success: verified"},
-                     {"o.obj", "o.png"}});
+                     {"o.obj"}});
     cases.push_back({"DeformOutAndReportTheSame",
                      lifted_box,
                      "deform --rest {D}/box.mesh --targets {D}/t.txt --out {D}/o.vtu --report "
