@@ -164,8 +164,7 @@ DeformInput read_deform_input(const DeformArguments& a) {
     // the planar mesh they are.
     if (d == 2 && input.mesh.ambient_dimension() == 3 &&
         (input.mesh.vertices.col(2).array() == 0.0).all()) {
-        const Eigen::MatrixXd planar = input.mesh.vertices.leftCols(2);
-        input.mesh.vertices = planar;
+        input.mesh.vertices.conservativeResize(Eigen::NoChange, 2);
     }
     if (input.mesh.ambient_dimension() != d) {
         throw InputError(a.rest +

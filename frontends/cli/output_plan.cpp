@@ -159,17 +159,17 @@ void OutputPlan::check() const {
     }
 
     // Writers that live in a plugin: found now, not after the solve.
-    for (const Entry& f : files_) {
-        const std::string format = extension(f.path);
-        if (format != ".vtu" && format != ".vtk") continue;
-        set_activity("loading the VTK file writer (libsa_vtk_io.so) for " + f.option + " " +
-                     f.path);
-        try {
-            require_vtk_io();
-        } catch (const Error& e) {
-            throw InputError(describe(f.option, f.path) + ": " + e.what());
-        }
-        break;
+    for (const Entry& f : files_) check_vtk_writer(f.option, f.path);
+}
+
+void check_vtk_writer(const std::string& option, const std::string& path) {
+    const std::string format = extension(path);
+    if (format != ".vtu" && format != ".vtk") return;
+    set_activity("loading the VTK file writer (libsa_vtk_io.so) for " + option + " " + path);
+    try {
+        require_vtk_io();  // once per process: the later calls return at once
+    } catch (const Error& e) {
+        throw InputError(describe(option, path) + ": " + e.what());
     }
 }
 

@@ -31,6 +31,11 @@
 
 namespace sa::cli {
 
+/// When `path` (given as `option`) is a .vtu or .vtk file, loads the plugin that writes it, or
+/// throws InputError `OPTION PATH: cannot load libsa_vtk_io.so ...`: found with the output
+/// checks, not after the solve. OutputPlan::check() calls it on its files.
+void check_vtk_writer(const std::string& option, const std::string& path);
+
 class OutputPlan {
   public:
     /// `overwrite`: --force, existing files may be replaced.

@@ -15,7 +15,6 @@
 #include "geometry/io/medit_io.h"
 #include "geometry/io/mesh_file.h"
 #include "geometry/io/polycube_labels_io.h"
-#include "geometry/io/vtk_io.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
 
@@ -114,14 +113,7 @@ PolycubePlan check_polycube_arguments(const PolycubeArguments& a) {
         }
         check_writable(*path, a.force);
     }
-    if (!plan.vtu.empty()) {  // its writer is a plugin: found now, not after the solve
-        set_activity("loading the VTK file writer (libsa_vtk_io.so) for --vtu " + plan.vtu);
-        try {
-            require_vtk_io();
-        } catch (const Error& e) {
-            throw InputError("--vtu " + plan.vtu + ": " + e.what());
-        }
-    }
+    check_vtk_writer("--vtu", plan.vtu);
     return plan;
 }
 
