@@ -143,12 +143,6 @@ std::string one_line(const std::string& text) {
     return out;
 }
 
-void check_writable(const std::string& path, bool overwrite) {
-    if (!overwrite && std::filesystem::exists(path)) {
-        throw InputError(path + " exists; pass --force to overwrite it");
-    }
-}
-
 std::string extension(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),

@@ -34,10 +34,6 @@ Eigen::MatrixXd read_positions(const std::string& path, Index expected_rows, int
 /// ends in a write that was bound to fail.
 void check_output_format(const std::string& path, int dimension);
 
-/// Throws InputError when `path` exists and `overwrite` is false. Only for the commands not yet
-/// registered (deform, polycube): the registered ones check their outputs with OutputPlan.
-void check_writable(const std::string& path, bool overwrite);
-
 /// `parse(value)`, whose InvalidArgumentError gets the option and value in front: "--energy frob:
 /// unknown distortion 'frob' (...)" (the parsers name the value, not the option it came with).
 template <class Parse>

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <sstream>
 
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/out_of_memory.h"
@@ -220,24 +221,24 @@ int run_deform_command(const DeformArguments& a) {
             write_pose_png(path, input.mesh, solved.positions, pose);
         });
     }
-    plan.commit();
-
-    std::cout << "  ARAP start:  " << format_quality(result.start.quality) << " ("
-              << result.start.arap.iterations << " iterations, " << result.start.arap.stop << ", "
-              << format_number(result.start.seconds) << " s)\n";
+    std::ostringstream summary;
+    summary << "  ARAP start:  " << format_quality(result.start.quality) << " ("
+            << result.start.arap.iterations << " iterations, " << result.start.arap.stop << ", "
+            << format_number(result.start.seconds) << " s)\n";
     for (std::size_t k = 0; k < result.solve.rounds.size(); ++k) {
         const BoundRound& round = result.solve.rounds[k];
         const RoundBounds b = round_bounds(round);
-        std::cout << "  round " << k << ": bounds conformal " << format_number(b.conformal_bound)
-                  << ", volumetric " << format_number(b.volumetric_bound) << " -> reached "
-                  << format_number(b.conformal) << ", " << format_number(b.volumetric) << "; "
-                  << round.iterations << " iterations, " << format_number(round.time) << " s"
-                  << (round.success ? "" : " (not verified within its bounds)") << "\n";
+        summary << "  round " << k << ": bounds conformal " << format_number(b.conformal_bound)
+                << ", volumetric " << format_number(b.volumetric_bound) << " -> reached "
+                << format_number(b.conformal) << ", " << format_number(b.volumetric) << "; "
+                << round.iterations << " iterations, " << format_number(round.time) << " s"
+                << (round.success ? "" : " (not verified within its bounds)") << "\n";
     }
-    std::cout << "  result:      " << format_quality(solved.final_quality) << "\n"
-              << "  " << solved.message << "\n"
-              << "  total " << format_number(result.seconds) << " s; wrote " << a.out
-              << picture.wrote() << (a.report.empty() ? "" : ", " + a.report) << "\n";
+    summary << "  result:      " << format_quality(solved.final_quality) << "\n"
+            << "  " << solved.message << "\n"
+            << "  total " << format_number(result.seconds) << " s; wrote " << a.out
+            << picture.wrote() << (a.report.empty() ? "" : ", " + a.report) << "\n";
+    plan.commit(summary.str());
     picture.warn(std::cerr);
     return result.success() ? kExitVerified : kExitNotVerified;
 }

@@ -162,14 +162,14 @@ int run_demo_command(const DemoArguments& a) {
             std::cerr << "sa: warning: a picture was not drawn: " << one_line(e.what()) << '\n';
         }
     }
-    plan.commit();
-    std::cout << "\nconformal = sigma_max / sigma_min per triangle; verified = no inverted or "
-                 "degenerate triangle, every boundary vertex on the star and, for K_conf = 4, "
-                 "the bounded distortion (sigma_max / sigma_min + sigma_min / sigma_max) / 2 "
-                 "at most 4 on every triangle, measured on the output positions.\n"
-              << "wrote " << initial_path << ", " << unbounded_path << ", " << bounded_path
-              << " (cell data: det_J, conformal, isometric, volumetric, inverted)\n"
-              << (pictures.empty() ? "" : "wrote " + pictures + "\n");
+    plan.commit(
+        "\nconformal = sigma_max / sigma_min per triangle; verified = no inverted or degenerate "
+        "triangle, every boundary vertex on the star and, for K_conf = 4, the bounded distortion "
+        "(sigma_max / sigma_min + sigma_min / sigma_max) / 2 at most 4 on every triangle, "
+        "measured on the output positions.\nwrote " +
+        initial_path + ", " + unbounded_path + ", " + bounded_path +
+        " (cell data: det_J, conformal, isometric, volumetric, inverted)\n" +
+        (pictures.empty() ? "" : "wrote " + pictures + "\n"));
     return all ? kExitVerified : kExitNotVerified;
 }
 

@@ -15,6 +15,7 @@ constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
 
 int wake_pipe[2] = {-1, -1};
 std::atomic<bool> interrupted{false};  // set before the cleanup waits for the output lock
+std::atomic<bool> handles_sigpipe{false};
 
 std::mutex& output_mutex() {
     static std::mutex mutex;
@@ -96,7 +97,8 @@ void install_interruption_handling() {
         sigaction(signal, nullptr, &previous);
         // A signal the parent ignores (nohup, a shell's background job) stays ignored.
         if (previous.sa_handler == SIG_IGN) continue;
-        sigaction(signal, &action, nullptr);
+        if (sigaction(signal, &action, nullptr) == 0 && signal == SIGPIPE)
+            handles_sigpipe.store(true);
     }
 }
 
@@ -114,6 +116,13 @@ std::unique_lock<std::mutex> output_lock() {
 void set_interruption_cleanup(std::function<void()> function) {
     const std::lock_guard<std::mutex> lock(output_mutex());
     cleanup() = std::move(function);
+}
+
+void await_broken_pipe_cleanup() {
+    if (!handles_sigpipe.load()) return;
+    // The failed write raised SIGPIPE in this thread before returning; the handler has woken the
+    // cleanup thread, which takes the output lock, removes the outputs and ends the process.
+    for (;;) pause();
 }
 
 }  // namespace sa::cli

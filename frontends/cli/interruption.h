@@ -26,4 +26,10 @@ std::unique_lock<std::mutex> output_lock();
 /// the output lock itself: not to be called while holding it.
 void set_interruption_cleanup(std::function<void()> cleanup);
 
+/// To be called when a write to standard output failed with EPIPE (its reader has gone). When
+/// SIGPIPE is handled here, that write raised it and the cleanup thread ends the process after
+/// the cleanup: this waits for it and never returns. When the parent ignores SIGPIPE, it returns
+/// at once and the caller reports the write error. Not to be called holding the output lock.
+void await_broken_pipe_cleanup();
+
 }  // namespace sa::cli

@@ -169,9 +169,8 @@ int run_map_command(const MapArguments& a) {
             const auto lock = output_lock();
             recorder->finish();
         }
-        plan.commit();
-        std::cout << "  INFEASIBLE: " << one_line(e.what()) << "\n"
-                  << (a.report.empty() ? "" : "  wrote " + a.report + "\n");
+        plan.commit("  INFEASIBLE: " + one_line(e.what()) + "\n" +
+                    (a.report.empty() ? "" : "  wrote " + a.report + "\n"));
         return kExitNotVerified;
     }
     const SimplexAssemblyResult& result = *solved;
@@ -189,7 +188,6 @@ int run_map_command(const MapArguments& a) {
         const auto lock = output_lock();
         series = recorder->finish();
     }
-    plan.commit();
 
     char times[200];
     std::snprintf(
@@ -198,14 +196,16 @@ int run_map_command(const MapArguments& a) {
         "verification %.3f)",
         result.times.total, result.times.setup, result.times.disassembly, result.times.optimization,
         result.times.recovery, result.times.vertex_stage, result.times.verification);
-    std::cout << "  initial map: " << format_quality(result.initial_quality) << "\n"
-              << "  result:      " << format_quality(result.final_quality) << "\n"
-              << "  " << to_string(options.variant) << ", " << result.num_variables
-              << " variables, " << result.newton.num_steps() + result.vertex_stage.num_steps()
-              << " iterations, time " << times << "\n"
-              << "  " << result.message << "\n"
-              << "  wrote " << a.out << picture.wrote() << (a.report.empty() ? "" : ", " + a.report)
-              << (series.empty() ? "" : ", " + series) << "\n";
+    std::ostringstream summary;
+    summary << "  initial map: " << format_quality(result.initial_quality) << "\n"
+            << "  result:      " << format_quality(result.final_quality) << "\n"
+            << "  " << to_string(options.variant) << ", " << result.num_variables
+            << " variables, " << result.newton.num_steps() + result.vertex_stage.num_steps()
+            << " iterations, time " << times << "\n"
+            << "  " << result.message << "\n"
+            << "  wrote " << a.out << picture.wrote() << (a.report.empty() ? "" : ", " + a.report)
+            << (series.empty() ? "" : ", " + series) << "\n";
+    plan.commit(summary.str());
     picture.warn(std::cerr);
     return result.success ? kExitVerified : kExitNotVerified;
 }

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <iostream>
 
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/out_of_memory.h"
@@ -60,6 +61,17 @@ void check_folder(const fs::path& folder, const std::string& option, const std::
     }
     ::close(fd);
     ::unlink(probe.c_str());
+}
+
+/// Writes `text` to standard output and flushes it; throws InputError when that fails.
+void write_standard_output(const std::string& text) {
+    errno = 0;
+    std::cout << text << std::flush;
+    if (std::fflush(stdout) == 0 && std::ferror(stdout) == 0 && std::cout) return;
+    const int reason = errno;
+    if (reason == EPIPE) await_broken_pipe_cleanup();
+    throw InputError(std::string("cannot write to standard output (") +
+                     (reason != 0 ? std::strerror(reason) : "write error") + ")");
 }
 
 }  // namespace
@@ -205,7 +217,8 @@ std::string OutputPlan::staged(const std::string& path) const {
     return (p.parent_path() / name).string();
 }
 
-void OutputPlan::commit() {
+void OutputPlan::commit(const std::string& summary) {
+    write_standard_output(summary);
     const auto lock = output_lock();
     std::vector<std::string> renamed;
     for (const Entry& f : files_) {

@@ -8,7 +8,7 @@
 //   ... read, solve ...
 //   plan.open_folders();           // creates the folders (before the solve that records)
 //   plan.write(out, [&](const std::string& path) { write_mesh_file(path, ...); });
-//   plan.commit();                 // every file renamed into place
+//   plan.commit(summary);          // the summary to stdout, then every file renamed into place
 //
 // check() rejects, naming the option: two outputs with one path, an output that names an input
 // (even with --force), an output that is a directory, a folder that does not exist, is not a
@@ -19,7 +19,9 @@
 // extension, so that the writers choose the same format), and commit() renames them all into
 // place. Until then a failure (an exception, or an interruption: interruption.h) removes every
 // hidden file, a folder the run created, and what the run added to a folder that existed: no
-// output is left and existing files keep their content.
+// output is left and existing files keep their content. The run's summary goes to standard
+// output before the renames, so that a summary that cannot be written (a closed pipe, a full
+// disk) leaves no output either.
 
 #include <functional>
 #include <ostream>
@@ -73,9 +75,12 @@ class OutputPlan {
         write(staged(path));
     }
 
-    /// Renames every written file into place (under the output lock). Throws InputError when a
-    /// rename fails, after removing the files renamed so far.
-    void commit();
+    /// Writes `summary` to standard output and flushes it, then renames every written file into
+    /// place (under the output lock). Throws InputError `cannot write to standard output (WHY)`
+    /// when the summary cannot be written (the outputs are removed then; a closed pipe ends the
+    /// process by SIGPIPE after removing them, as interruption.h says), and when a rename fails,
+    /// after removing the files renamed so far.
+    void commit(const std::string& summary);
 
   private:
     struct Entry {
@@ -107,8 +112,8 @@ class OutputPlan {
 ///   picture.plan(plan);                                    // before plan.check()
 ///   ... solve, write the other outputs ...
 ///   picture.draw(plan, [&](const std::string& path) { write_..._png(path, ...); });
-///   plan.commit();
-///   std::cout << "wrote " << a.out << picture.wrote() << ...;
+///   summary << "wrote " << a.out << picture.wrote() << ...;
+///   plan.commit(summary.str());
 ///   picture.warn(std::cerr);                               // after the summary
 class PictureOutput {
   public:

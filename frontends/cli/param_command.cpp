@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/map_command.h"
@@ -215,7 +216,6 @@ int run_param_command(const ParamArguments& a) {
             {"peak_memory_gb", peak_memory_gb()}};
         plan.write(a.report, [&](const std::string& path) { write_json(path, report); });
     }
-    plan.commit();
     char line[512];
     std::snprintf(
         line, sizeof line,
@@ -224,24 +224,26 @@ int run_param_command(const ParamArguments& a) {
         a.init.c_str(), r.initial_map_time, long(r.initial_quality.inverted),
         r.initial_quality.conformal.max, r.initial_quality.conformal.mean, long(q.inverted),
         q.conformal.max, q.conformal.mean, q.isometric.max, q.isometric.mean);
-    std::cout << line;
+    std::ostringstream summary;
+    summary << line;
     if (options.optimal_bound_rounds > 0) {
-        std::cout << "  optimal bound: " << r.rounds.size() << " rounds, K reached "
-                  << r.reached_bound << "\n";
+        summary << "  optimal bound: " << r.rounds.size() << " rounds, K reached "
+                << r.reached_bound << "\n";
     }
     if (r.fallback.used) {
-        std::cout << "  fallback: " << r.fallback.reason << "\n";
+        summary << "  fallback: " << r.fallback.reason << "\n";
         for (const TriedStart& t : r.fallback.starts)
-            std::cout << "    " << t.name << ": " << t.outcome << "\n";
+            summary << "    " << t.name << ": " << t.outcome << "\n";
     }
     std::snprintf(line, sizeof line,
                   "  time %.2f s (read %.2f, initial map %.2f, Simplex Assembly %.2f, output "
                   "%.2f); peak memory %.2f GB\n",
                   total.seconds(), read_time, r.initial_map_time, solve_time - r.initial_map_time,
                   output_time, peak_memory_gb());
-    std::cout << line << "  " << r.message << "\n  wrote " << a.out
-              << (a.layout.empty() ? "" : ", " + a.layout) << picture.wrote()
-              << (a.report.empty() ? "" : ", " + a.report) << "\n";
+    summary << line << "  " << r.message << "\n  wrote " << a.out
+            << (a.layout.empty() ? "" : ", " + a.layout) << picture.wrote()
+            << (a.report.empty() ? "" : ", " + a.report) << "\n";
+    plan.commit(summary.str());
     picture.warn(std::cerr);
     return r.success ? kExitVerified : kExitNotVerified;
 }
@@ -260,9 +262,9 @@ int run_subdivide_command(const SubdivideArguments& a) {
     plan.write(a.out, [&](const std::string& path) {
         write_mesh_file(path, out.vertices, out.simplices);
     });
-    plan.commit();
-    std::cout << "sa subdivide: " << file.mesh.num_simplices() << " -> " << out.num_simplices()
-              << " triangles, " << out.num_vertices() << " vertices; wrote " << a.out << "\n";
+    plan.commit("sa subdivide: " + std::to_string(file.mesh.num_simplices()) + " -> " +
+                std::to_string(out.num_simplices()) + " triangles, " +
+                std::to_string(out.num_vertices()) + " vertices; wrote " + a.out + "\n");
     return 0;
 }
 

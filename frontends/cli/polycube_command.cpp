@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <set>
+#include <sstream>
 
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/map_command.h"
@@ -99,22 +99,23 @@ PolycubePlan check_polycube_arguments(const PolycubeArguments& a) {
     plan.vtu = a.vtu;
     plan.png = PictureOutput(a.png, a.no_png, a.out).path();
     plan.report = a.report;
-    std::set<std::string> seen;
-    for (const std::string* path :
-         {&plan.out, &plan.rest, &plan.flags, &plan.vtu, &plan.png, &plan.report}) {
-        if (path->empty()) continue;
-        if (!seen.insert(*path).second) {
-            throw InvalidArgumentError(*path + " is named for two outputs");
-        }
-        for (const std::string* input : {&a.mesh, &a.labels, &a.label_surface}) {
-            if (*path == *input) {
-                throw InvalidArgumentError(*path + " is both an input and an output");
-            }
-        }
-        check_writable(*path, a.force);
-    }
-    check_vtk_writer("--vtu", plan.vtu);
     return plan;
+}
+
+PictureOutput plan_polycube_files(const PolycubeArguments& a, const PolycubePlan& plan,
+                                  OutputPlan& outputs) {
+    outputs.input("--mesh", a.mesh);
+    outputs.input("--labels", a.labels);
+    outputs.input("--label-surface", a.label_surface);
+    outputs.file("--out", plan.out);
+    outputs.file("--out (rest mesh)", plan.rest);
+    outputs.file("--out (flags)", plan.flags);
+    outputs.file("--vtu", plan.vtu);
+    PictureOutput picture(a.png, a.no_png, a.out);
+    picture.plan(outputs);
+    outputs.file("--report", plan.report);
+    outputs.check();
+    return picture;
 }
 
 PreparedPolycube read_polycube_input(const PolycubePlan& plan, const Logger& logger) {
@@ -125,14 +126,9 @@ PreparedPolycube read_polycube_input(const PolycubePlan& plan, const Logger& log
 void write_polycube_outputs(const PolycubePlan& plan, const PreparedPolycube& prepared,
                             const Eigen::MatrixXd& positions,
                             const PolycubeVerification& verification, nlohmann::json report,
-                            OutputPlan* staging) {
+                            OutputPlan& outputs) {
     auto write = [&](const std::string& path, const auto& writer) {
-        if (path.empty()) return;
-        if (staging) {
-            staging->write(path, writer);
-        } else {
-            writer(path);
-        }
+        if (!path.empty()) outputs.write(path, writer);
     };
     if (positions.rows() != prepared.mesh.num_vertices() || positions.cols() != 3) {
         throw InvalidArgumentError("write_polycube_outputs: positions must be #V x 3 = " +
@@ -180,17 +176,7 @@ int run_polycube_command(const PolycubeArguments& arguments) {
     Stopwatch total;
     const PolycubePlan plan = check_polycube_arguments(arguments);
     OutputPlan outputs(arguments.force);
-    outputs.input("--mesh", arguments.mesh);
-    outputs.input("--labels", arguments.labels);
-    outputs.input("--label-surface", arguments.label_surface);
-    outputs.file("--out", plan.out);
-    outputs.file("--out (rest mesh)", plan.rest);
-    outputs.file("--out (flags)", plan.flags);
-    outputs.file("--vtu", plan.vtu);
-    PictureOutput picture(arguments.png, arguments.no_png, arguments.out);
-    picture.plan(outputs);
-    outputs.file("--report", plan.report);
-    outputs.check();
+    PictureOutput picture = plan_polycube_files(arguments, plan, outputs);
     const Logger logger = stderr_logger(plan.quiet);
 
     set_activity("reading --mesh " + plan.mesh);
@@ -240,22 +226,23 @@ int run_polycube_command(const PolycubeArguments& arguments) {
     set_activity("writing the outputs");
     PolycubePlan files = plan;
     files.png.clear();  // drawn below: a picture that cannot be drawn costs the run nothing else
-    write_polycube_outputs(files, prepared, solve.positions, solve.verification, report, &outputs);
+    write_polycube_outputs(files, prepared, solve.positions, solve.verification, report, outputs);
     picture.draw(outputs, [&](const std::string& path) {
         write_polycube_png(path, prepared, solve.positions, solve.verification,
                            polycube_picture_title(solve.verification));
     });
-    outputs.commit();
-    std::cout << solve.message << "\n"
-              << "conformal distortion max " << solve.verification.quality.conformal.max
-              << ", mean " << solve.verification.quality.conformal.mean << "; isometric max "
-              << solve.verification.quality.isometric.max << "; "
-              << (solve.rounds.empty() ? std::string()
-                                       : std::to_string(solve.rounds.size()) + " rounds, ")
-              << "time " << total.seconds() << " s\n"
-              << "wrote " << plan.out << ", " << plan.rest << ", " << plan.flags
-              << (plan.vtu.empty() ? "" : ", " + plan.vtu) << picture.wrote()
-              << (plan.report.empty() ? "" : ", " + plan.report) << "\n";
+    std::ostringstream summary;
+    summary << solve.message << "\n"
+            << "conformal distortion max " << solve.verification.quality.conformal.max
+            << ", mean " << solve.verification.quality.conformal.mean << "; isometric max "
+            << solve.verification.quality.isometric.max << "; "
+            << (solve.rounds.empty() ? std::string()
+                                     : std::to_string(solve.rounds.size()) + " rounds, ")
+            << "time " << total.seconds() << " s\n"
+            << "wrote " << plan.out << ", " << plan.rest << ", " << plan.flags
+            << (plan.vtu.empty() ? "" : ", " + plan.vtu) << picture.wrote()
+            << (plan.report.empty() ? "" : ", " + plan.report) << "\n";
+    outputs.commit(summary.str());
     picture.warn(std::cerr);
     return solve.success ? kExitVerified : kExitNotVerified;
 }

@@ -35,8 +35,10 @@
 
 namespace {
 
+/// One line on stderr, in one write: a reader that goes away sees all of it or none.
 int report(const char* kind, const std::string& message, int status) {
-    std::cerr << "sa: " << kind << ": " << sa::cli::one_line(message) << '\n' << std::flush;
+    std::cerr << ("sa: " + std::string(kind) + ": " + sa::cli::one_line(message) + '\n')
+              << std::flush;
     return status;
 }
 
@@ -55,8 +57,11 @@ std::string command_list(CLI::App& app) {
     return list;
 }
 
-/// The summary went to stdout: a write error there (a full disk, /dev/full) is an error too.
+/// The summary went to stdout: a write error there (a full disk, /dev/full) is an error too,
+/// unless the run failed already (its one line said why). OutputPlan::commit() writes the
+/// summary before the outputs are in place; this catches what a command printed after.
 int check_standard_output(int status) {
+    if (status != sa::cli::kExitVerified && status != sa::cli::kExitNotVerified) return status;
     errno = 0;
     const bool failed = std::fflush(stdout) != 0 || std::ferror(stdout) != 0 || !std::cout;
     if (!failed) return status;
@@ -122,7 +127,7 @@ int run(int argc, char** argv) {
         return report("error", sa::cli::out_of_memory_message(), sa::cli::kExitOutOfMemory);
     } catch (const sa::NoSolutionError& e) {
         // A problem with no solution as posed: diagnosed, nothing optimized (exit 1, not 2).
-        std::cerr << "sa: " << sa::cli::one_line(e.what()) << '\n' << std::flush;
+        std::cerr << ("sa: " + sa::cli::one_line(e.what()) + '\n') << std::flush;
         return sa::cli::kExitNotVerified;
     } catch (const sa::Error& e) {
         return report("error", e.what(), sa::cli::kExitBadInput);

@@ -137,8 +137,7 @@ int run_seamless_command(const SeamlessArguments& a) {
     if (!r.infeasible.empty()) {
         // Diagnosed before optimizing: no map is written.
         if (!a.report.empty()) {
-            write_json(
-                a.report,
+            const nlohmann::json report =
                 {{"command", "seamless"},
                  {"mesh", a.mesh},
                  {"faces", mesh.num_simplices()},
@@ -149,10 +148,11 @@ int run_seamless_command(const SeamlessArguments& a) {
                  {"infeasible", {{"description", r.infeasible}}},
                  {"success", false},
                  {"message", r.message},
-                 {"times", {{"read", read_time}, {"total", total.seconds()}}}});
+                 {"times", {{"read", read_time}, {"total", total.seconds()}}}};
+            plan.write(a.report, [&](const std::string& path) { write_json(path, report); });
         }
-        std::cout << "  " << r.message << (a.report.empty() ? "" : "\n  wrote " + a.report) << "\n";
-        return 1;
+        plan.commit("  " + r.message + (a.report.empty() ? "" : "\n  wrote " + a.report) + "\n");
+        return kExitNotVerified;
     }
 
     set_activity("writing the outputs");
@@ -235,7 +235,6 @@ int run_seamless_command(const SeamlessArguments& a) {
         times["total"] = total.seconds();
         plan.write(a.report, [&](const std::string& path) { write_json(path, report); });
     }
-    plan.commit();
     std::ostringstream singular;  // the first few, "vertex (index)"
     for (std::size_t i = 0; i < r.singularities_before.size() && i < 8; ++i) {
         singular << (i ? ", " : " at vertices ") << r.singularities_before[i].vertex << " ("
@@ -258,9 +257,8 @@ int run_seamless_command(const SeamlessArguments& a) {
                   r.result.map.max_seam_mismatch, r.result.quality.conformal.max,
                   r.result.quality.conformal.mean, total.seconds(), read_time, r.times.field,
                   r.times.integrable, r.times.poisson, output_time, peak_memory_gb());
-    std::cout << line << "  " << r.message << "\n  wrote " << a.out
-              << (vtu.empty() ? "" : ", " + vtu) << picture.wrote()
-              << (a.report.empty() ? "" : ", " + a.report) << "\n";
+    plan.commit(line + ("  " + r.message) + "\n  wrote " + a.out + (vtu.empty() ? "" : ", " + vtu) +
+                picture.wrote() + (a.report.empty() ? "" : ", " + a.report) + "\n");
     picture.warn(std::cerr);
     return r.success ? kExitVerified : kExitNotVerified;
 }

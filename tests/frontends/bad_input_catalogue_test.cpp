@@ -25,6 +25,7 @@
 #include <map>
 #include <sstream>
 #include <thread>
+#include <tuple>
 
 #include "geometry/io/mesh_file.h"
 #include "geometry/map_quality.h"
@@ -849,15 +850,6 @@ std::vector<Case> catalogue() {
          2,
          {"o.obj: .obj holds triangles"}},
 
-        // Standard output that cannot be written.
-        {"StdoutFull",
-         problem,
-         "map --rest {D}/p.txt --out {D}/o.vtu --quiet",
-         2,
-         {"cannot write to standard output (No space left on device)"},
-         {"o.vtu", "o.png"},
-         true},
-
         // Inputs that must succeed, verified.
         {"ProblemWithByteOrderMark",
          [](const Inputs& in) { in.text("p.txt", kBom + grid_problem(4, grid_boundary(4))); },
@@ -966,6 +958,26 @@ std::vector<Case> catalogue() {
         }
         in.text("t.txt", rows.str());
     };
+    // Standard output that cannot be written: the summary goes out before the outputs are put in
+    // place, so every command ends with exit 2 and leaves nothing.
+    for (const auto& [name, inputs, command] :
+         std::vector<std::tuple<std::string, std::function<void(const Inputs&)>, std::string>>{
+             {"Map", problem, "map --rest {D}/p.txt --out {D}/o.vtu --report {D}/r.json"},
+             {"Param", bump_off, "param --mesh {D}/bump.off --out {D}/uv.obj --layout {D}/l.vtu"},
+             {"Seamless", sphere_off, "seamless --mesh {D}/sphere.off --out {D}/s.obj"},
+             {"Polycube", tets_mesh, "polycube --mesh {D}/t.mesh --out {D}/o.mesh"},
+             {"Deform", lifted_box, "deform --rest {D}/box.mesh --targets {D}/t.txt --out {D}/o.vtu"},
+             {"Demo", none, "demo --size 4 --out-dir {D}/demo"},
+             {"Subdivide", bump_off, "subdivide --mesh {D}/bump.off --out {D}/s.obj"}}) {
+        const bool quiet = name != "Subdivide";
+        cases.push_back({"StdoutFull" + name,
+                         inputs,
+                         command + (quiet ? " --quiet --no-png" : ""),
+                         2,
+                         {"sa: error: cannot write to standard output (No space left on device)"},
+                         {},
+                         true});
+    }
     cases.push_back({"DeformPosesABox",
                      lifted_box,
                      "deform --rest {D}/box.mesh --targets {D}/t.txt --out {D}/o.vtu --report "
@@ -1103,9 +1115,11 @@ class Interruption : public ::testing::Test {
     }
     void TearDown() override { fs::remove_all(folder_); }
 
-    /// Starts `sa` with `arguments` (stdout and stderr to /dev/null), with default signal
-    /// dispositions, as from an interactive shell.
-    pid_t start(const std::vector<std::string>& arguments) {
+    /// Starts `sa` with `arguments` (stdout to `stdout_fd`, by default /dev/null, and stderr to
+    /// `stderr_path`), with default signal dispositions, as from an interactive shell; with
+    /// `sigpipe_ignored`, SIGPIPE ignored, as under nohup.
+    pid_t start(const std::vector<std::string>& arguments, int stdout_fd = -1,
+                const std::string& stderr_path = "/dev/null", bool sigpipe_ignored = false) {
         std::vector<std::string> args = {SA_EXECUTABLE};
         args.insert(args.end(), arguments.begin(), arguments.end());
         std::vector<char*> argv;
@@ -1113,17 +1127,28 @@ class Interruption : public ::testing::Test {
         argv.push_back(nullptr);
         posix_spawn_file_actions_t actions;
         posix_spawn_file_actions_init(&actions);
-        posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-        posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+        if (stdout_fd >= 0) {
+            posix_spawn_file_actions_adddup2(&actions, stdout_fd, 1);
+        } else {
+            posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+        }
+        posix_spawn_file_actions_addopen(&actions, 2, stderr_path.c_str(),
+                                         O_WRONLY | O_CREAT | O_TRUNC, 0644);
         posix_spawnattr_t attributes;
         posix_spawnattr_init(&attributes);
         sigset_t defaults;
         sigemptyset(&defaults);
-        for (int s : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) sigaddset(&defaults, s);
+        for (int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&defaults, s);
+        if (!sigpipe_ignored) sigaddset(&defaults, SIGPIPE);
         posix_spawnattr_setsigdefault(&attributes, &defaults);
         posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
+        // An ignored signal stays ignored in the child.
+        struct sigaction ignore {}, previous {};
+        ignore.sa_handler = SIG_IGN;
+        if (sigpipe_ignored) sigaction(SIGPIPE, &ignore, &previous);
         pid_t pid = -1;
         EXPECT_EQ(posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), environ), 0);
+        if (sigpipe_ignored) sigaction(SIGPIPE, &previous, nullptr);
         posix_spawn_file_actions_destroy(&actions);
         posix_spawnattr_destroy(&attributes);
         return pid;
@@ -1205,6 +1230,40 @@ TEST_F(Interruption, WhileRecordingRemovesTheRecording) {
     EXPECT_EQ(snapshot(folder_), before);
 }
 
+// Standard output a pipe whose reader has gone: the summary is written before the outputs are
+// put in place, so its SIGPIPE removes them and ends the command by that signal (README, "Exit
+// status"); with SIGPIPE ignored, the write error is exit 2 and one line. Nothing is left.
+TEST_F(Interruption, AClosedOutputPipeLeavesNothing) {
+    std::ofstream(folder_ / "p.txt") << grid_problem(4, grid_boundary(4), {{5, {0.4, 0.5}}});
+    const fs::path errors = fs::temp_directory_path() /
+                            ("sa_closed_pipe_" + std::to_string(::getpid()) + ".err");
+    const auto before = snapshot(folder_);
+    for (const bool ignored : {false, true}) {
+        SCOPED_TRACE(ignored ? "SIGPIPE ignored" : "SIGPIPE by default");
+        int ends[2];
+        ASSERT_EQ(pipe(ends), 0);
+        close(ends[0]);  // no reader
+        const pid_t pid = start({"map", "--rest", (folder_ / "p.txt").string(), "--out",
+                                 (folder_ / "o.vtu").string(), "--report",
+                                 (folder_ / "r.json").string(), "--quiet"},
+                                ends[1], errors.string(), ignored);
+        close(ends[1]);
+        ASSERT_GT(pid, 0);
+        int status = 0;
+        waitpid(pid, &status, 0);
+        const std::string said = read_file(errors);
+        if (ignored) {
+            EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << status;
+            EXPECT_EQ(said, "sa: error: cannot write to standard output (Broken pipe)\n");
+        } else {
+            EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGPIPE) << status;
+            EXPECT_EQ(said, "");
+        }
+        EXPECT_EQ(snapshot(folder_), before);
+    }
+    fs::remove(errors);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Memory limits: never a hang; the one line says what ran out.
 
@@ -1236,7 +1295,7 @@ TEST(MemoryLimit, EveryCommandThatSolvesEndsAtOnceWhenTheBlasBufferCannotBeHad) 
     if (kSanitized) GTEST_SKIP() << "the sanitizer runtime cannot run under ulimit -v";
     const fs::path folder = fs::temp_directory_path() / ("sa_blas_" + std::to_string(::getpid()));
     const std::string d = folder.string();
-    for (const std::string arguments :
+    for (const std::string& arguments : std::vector<std::string>
          {"map --rest " + d + "/p.txt --out " + d + "/o.vtu",
           "param --mesh " + d + "/m.obj --out " + d + "/o.obj",
           "seamless --mesh " + d + "/m.obj --out " + d + "/o.obj",

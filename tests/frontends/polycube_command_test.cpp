@@ -36,16 +36,19 @@ class PolycubeCommand : public ::testing::Test {
     void TearDown() override { fs::remove_all(dir_); }
     std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
-    /// Parses `args` after `sa polycube` and checks them; the exception's message, or "".
+    /// Parses `args` after `sa polycube` and checks them and the output locations; the
+    /// exception's message, or "". The arguments are kept in `arguments_`.
     std::string check(std::vector<std::string> args, PolycubePlan* plan = nullptr) {
         CLI::App app;
-        PolycubeArguments arguments;
-        add_polycube_command(app, arguments);
+        arguments_ = {};
+        add_polycube_command(app, arguments_);
         args.insert(args.begin(), "polycube");
         std::reverse(args.begin(), args.end());  // CLI11 takes them last first
         try {
             app.parse(args);
-            const PolycubePlan p = check_polycube_arguments(arguments);
+            const PolycubePlan p = check_polycube_arguments(arguments_);
+            OutputPlan outputs(arguments_.force);
+            plan_polycube_files(arguments_, p, outputs);
             if (plan != nullptr) *plan = p;
         } catch (const CLI::ParseError& e) {
             return std::string("parse: ") + e.what();
@@ -55,6 +58,7 @@ class PolycubeCommand : public ::testing::Test {
         return "";
     }
     fs::path dir_;
+    PolycubeArguments arguments_;
 };
 
 TEST_F(PolycubeCommand, ArgumentsAreChecked) {
@@ -117,7 +121,7 @@ TEST_F(PolycubeCommand, ArgumentsAreChecked) {
     fails({"--mesh", path("L.mesh"), "--out", path("o.mesh"), "--max-time", "-1"}, "--max-time");
     fails({"--mesh", path("L.mesh"), "--out", path("o.mesh"), "--report", path("o.flags")},
           ".json");
-    fails({"--mesh", path("L.mesh"), "--out", path("L.mesh")}, "both an input and an output");
+    fails({"--mesh", path("L.mesh"), "--out", path("L.mesh")}, "is the input of --mesh");
     fails({"--out", path("o.mesh")}, "parse:");
     std::ofstream(path("o.rest.mesh")) << "";
     fails({"--mesh", path("L.mesh"), "--out", path("o.mesh")}, "exists; pass --force");
@@ -140,7 +144,11 @@ TEST_F(PolycubeCommand, InputAndOutputsAroundTheSolve) {
         cube_cover_map(prepared.mesh, prepared.boundary, prepared.charts).positions;
     const PolycubeVerification v = verify_polycube(prepared.layout(), start, prepared.input_volume);
     EXPECT_TRUE(v.passed);
-    write_polycube_outputs(plan, prepared, start, v, {{"command", "test"}});
+    OutputPlan outputs(false);
+    plan_polycube_files(arguments_, plan, outputs);
+    write_polycube_outputs(plan, prepared, start, v, {{"command", "test"}}, outputs);
+    EXPECT_FALSE(fs::exists(path("o.mesh")));  // staged until the commit
+    outputs.commit("");
     for (const char* name : {"o.mesh", "o.rest.mesh", "o.flags", "o.vtu", "o.json"}) {
         EXPECT_TRUE(fs::exists(path(name))) << name;
     }
