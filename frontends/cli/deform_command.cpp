@@ -194,7 +194,7 @@ int run_deform_command(const DeformArguments& a) {
     std::cout << "sa deform: " << input.mesh.num_simplices()
               << (d == 2 ? " triangles" : " tetrahedra") << ", " << input.mesh.num_vertices()
               << " vertices, " << input.handle_targets.handles.size() << " handles (" << a.rest
-              << ")\n";
+              << ")\n  handles and targets: " << input.handle_targets.reading << "\n";
 
     SimplexAssemblyObserver observer;
     observer.logger = stderr_logger(a.quiet);

@@ -106,11 +106,24 @@ int run_map_command(const MapArguments& a) {
     const Index nv = problem.mesh.num_vertices();
     check_output_format(a.out, d);
     set_activity("reading --handles " + a.handles);
-    problem.handles = a.handles.empty() ? rest.handles : read_index_list(a.handles);
+    std::string handles_reading;
+    if (a.handles.empty()) {
+        problem.handles = rest.handles;
+    } else {
+        IndexList list = read_index_list(a.handles);
+        for (std::size_t k = 0; k < list.indices.size(); ++k) {
+            if (list.indices[k] >= nv)
+                throw InputError(a.handles + ":" + std::to_string(list.lines[k]) +
+                                 ": handle vertex " + std::to_string(list.indices[k]) +
+                                 " outside [0, " + std::to_string(nv) + ")");
+        }
+        handles_reading = first_number_reading(a.handles, list);
+        problem.handles = std::move(list.indices);
+    }
     for (Index h : problem.handles) {
         if (h < 0 || h >= nv) {
-            throw InputError((a.handles.empty() ? a.rest : a.handles) + ": handle vertex " +
-                             std::to_string(h) + " outside [0, " + std::to_string(nv) + ")");
+            throw InputError(a.rest + ": handle vertex " + std::to_string(h) + " outside [0, " +
+                             std::to_string(nv) + ")");
         }
     }
     Eigen::MatrixXd targets;
@@ -151,7 +164,8 @@ int run_map_command(const MapArguments& a) {
     }
     std::cout << "sa map: " << problem.mesh.num_simplices()
               << (d == 2 ? " triangles" : " tetrahedra") << ", " << nv << " vertices, "
-              << problem.handles.size() << " handles (" << a.rest << ")\n";
+              << problem.handles.size() << " handles (" << a.rest << ")\n"
+              << (handles_reading.empty() ? "" : "  handles: " + handles_reading + "\n");
     set_activity("solving (Simplex Assembly on " + std::to_string(problem.mesh.num_simplices()) +
                  (d == 2 ? " triangles)" : " tetrahedra)"));
     std::optional<SimplexAssemblyResult> solved;

@@ -1,5 +1,8 @@
 #include "frontends/deform/handle_targets.h"
 
+#include <algorithm>
+#include <exception>
+#include <optional>
 #include <set>
 #include <unordered_map>
 
@@ -52,6 +55,65 @@ std::string vertices_text(Index n) {
 
 }  // namespace
 
+namespace {
+
+/// Targets from rows `index x y (z)`: exactly the handles, in any order.
+Eigen::MatrixXd indexed_targets(const PositionRows& rows, const IndexList& handles,
+                                const std::string& targets_path, const std::string& handles_path) {
+    std::unordered_map<Index, std::size_t> slot;
+    for (std::size_t k = 0; k < handles.indices.size(); ++k) slot[handles.indices[k]] = k;
+    Eigen::MatrixXd targets(handles.indices.size(), rows.positions.cols());
+    std::vector<unsigned char> given(handles.indices.size(), 0);
+    for (std::size_t r = 0; r < rows.indices.size(); ++r) {
+        const auto it = slot.find(rows.indices[r]);
+        if (it == slot.end()) {
+            throw InputError(targets_path + ":" + std::to_string(rows.lines[r]) + ": vertex " +
+                             std::to_string(rows.indices[r]) + " is not a handle of " +
+                             handles_path);
+        }
+        targets.row(it->second) = rows.positions.row(r);
+        given[it->second] = 1;
+    }
+    for (std::size_t k = 0; k < given.size(); ++k) {
+        if (!given[k]) {
+            throw InputError(targets_path + ": no target for handle vertex " +
+                             std::to_string(handles.indices[k]) + " (" + handles_path + ":" +
+                             std::to_string(handles.lines[k]) + ")");
+        }
+    }
+    return targets;
+}
+
+/// Targets from rows `x y (z)`: one per vertex or one per handle, in the handle list's order.
+/// `per` receives "vertex" or "handle".
+Eigen::MatrixXd plain_targets(const PositionRows& rows, const IndexList& handles,
+                              Index num_vertices, const std::string& targets_path,
+                              const std::string& handles_path, std::string& per) {
+    const Index n = static_cast<Index>(rows.positions.rows());
+    const Index num_handles = static_cast<Index>(handles.indices.size());
+    // Every vertex a handle, listed out of order: a row per vertex and a row per handle differ.
+    if (n == num_vertices && n == num_handles &&
+        !std::is_sorted(handles.indices.begin(), handles.indices.end())) {
+        throw InputError(targets_path + ": " + std::to_string(n) +
+                         " rows, one per vertex and one per handle of " + handles_path +
+                         ", whose order differs; give rows `index x y" +
+                         (rows.positions.cols() == 3 ? " z`" : "`") + " instead");
+    }
+    if (n == num_vertices) {
+        per = "vertex";
+        return rows_at(rows.positions, handles.indices);
+    }
+    if (n == num_handles) {
+        per = "handle";
+        return rows.positions;
+    }
+    throw InputError(targets_path + ": " + std::to_string(n) + " rows; expected one per vertex (" +
+                     std::to_string(num_vertices) + ") or one per handle of " + handles_path +
+                     " (" + std::to_string(num_handles) + ")");
+}
+
+}  // namespace
+
 HandleTargets read_handle_targets(const std::string& handles_path, const std::string& targets_path,
                                   Index num_vertices, int dimension) {
     if (dimension != 2 && dimension != 3) {
@@ -60,39 +122,41 @@ HandleTargets read_handle_targets(const std::string& handles_path, const std::st
     }
     if (targets_path.empty()) throw InvalidArgumentError("read_handle_targets: no targets file");
     HandleTargets result;
+    const std::string xy = dimension == 3 ? "x y z" : "x y";
 
     // Targets alone: rows `index x y z`.
     if (handles_path.empty()) {
         if (is_mesh_file(targets_path)) {
             throw InputError(targets_path +
                              ": a mesh file gives positions, not handles; give the handle list "
-                             "too, or rows `index x y z`");
+                             "too, or rows `index " + xy + "`");
         }
         PositionRows rows = read_position_rows(targets_path, dimension, num_vertices);
         if (!rows.indexed()) {
             throw InputError(targets_path + ":" + std::to_string(rows.lines.front()) +
                              ": rows without a vertex index; alone, the targets file needs rows "
-                             "`index x" +
-                             (dimension == 3 ? " y z`" : " y`") + " (or give the handle list)");
+                             "`index " + xy + "` (or give the handle list)");
         }
         result.handles = std::move(rows.indices);
         result.targets = std::move(rows.positions);
+        result.reading = "rows `index " + xy + "` of " + targets_path;
         return result;
     }
 
     // The handle list, each handle in range.
-    std::vector<int> handle_lines;
-    result.handles = read_index_list(handles_path, &handle_lines);
-    if (result.handles.empty()) throw InputError(handles_path + ": no handle vertex");
-    for (std::size_t k = 0; k < result.handles.size(); ++k) {
-        if (result.handles[k] >= num_vertices) {
-            throw InputError(handles_path + ":" + std::to_string(handle_lines[k]) +
-                             ": handle vertex " + std::to_string(result.handles[k]) +
+    const IndexList handles = read_index_list(handles_path);
+    if (handles.indices.empty()) throw InputError(handles_path + ": no handle vertex");
+    for (std::size_t k = 0; k < handles.indices.size(); ++k) {
+        if (handles.indices[k] >= num_vertices) {
+            throw InputError(handles_path + ":" + std::to_string(handles.lines[k]) +
+                             ": handle vertex " + std::to_string(handles.indices[k]) +
                              " outside [0, " + std::to_string(num_vertices) + ") (the mesh has " +
                              vertices_text(num_vertices) + ")");
         }
     }
-    const Index num_handles = static_cast<Index>(result.handles.size());
+    result.handles = handles.indices;
+    const std::string first_number = first_number_reading(handles_path, handles);
+    const std::string handles_note = first_number.empty() ? "" : "; " + first_number;
 
     if (is_mesh_file(targets_path)) {
         const Eigen::MatrixXd positions = mesh_positions(targets_path, dimension);
@@ -101,51 +165,71 @@ HandleTargets read_handle_targets(const std::string& handles_path, const std::st
                              ", the rest mesh has " + std::to_string(num_vertices));
         }
         result.targets = rows_at(positions, result.handles);
+        result.reading = handles_path + " at their vertices of " + targets_path + handles_note;
         return result;
     }
 
-    PositionRows rows = read_position_rows(targets_path, dimension, num_vertices);
-    if (rows.indexed()) {
-        // Exactly the handles, in any order.
-        std::unordered_map<Index, std::size_t> slot;
-        for (std::size_t k = 0; k < result.handles.size(); ++k) slot[result.handles[k]] = k;
-        result.targets.resize(num_handles, dimension);
-        std::vector<unsigned char> given(result.handles.size(), 0);
-        for (std::size_t r = 0; r < rows.indices.size(); ++r) {
-            const auto it = slot.find(rows.indices[r]);
-            if (it == slot.end()) {
-                throw InputError(targets_path + ":" + std::to_string(rows.lines[r]) + ": vertex " +
-                                 std::to_string(rows.indices[r]) + " is not a handle of " +
-                                 handles_path);
-            }
-            result.targets.row(it->second) = rows.positions.row(r);
-            given[it->second] = 1;
-        }
-        for (std::size_t k = 0; k < given.size(); ++k) {
-            if (!given[k]) {
-                throw InputError(targets_path + ": no target for handle vertex " +
-                                 std::to_string(result.handles[k]) + " (" + handles_path + ":" +
-                                 std::to_string(handle_lines[k]) + ")");
-            }
-        }
+    // Rows of positions. In 2D, three numbers a row are `index x y` or `x y 0`: each reading is
+    // tried against the handles, and a file that both fit is refused.
+    std::optional<PositionRows> by_count;
+    std::exception_ptr by_count_error;
+    try {
+        by_count = read_position_rows(targets_path, dimension, num_vertices);
+    } catch (const InputError&) {
+        if (dimension == 3) throw;
+        by_count_error = std::current_exception();
+    }
+    if (by_count && !by_count->indexed()) {
+        std::string per;
+        result.targets = plain_targets(*by_count, handles, num_vertices, targets_path,
+                                       handles_path, per);
+        result.reading = "rows `" + xy + "` of " + targets_path + ", one per " + per + handles_note;
         return result;
     }
-    const Index n = static_cast<Index>(rows.positions.rows());
-    if (n == num_vertices) {
-        result.targets = rows_at(rows.positions, result.handles);
-    } else if (n == num_handles) {
-        result.targets = std::move(rows.positions);
-    } else {
-        throw InputError(targets_path + ": " + std::to_string(n) +
-                         " rows; expected one per vertex (" + std::to_string(num_vertices) +
-                         ") or one per handle of " + handles_path + " (" +
-                         std::to_string(num_handles) + ")");
+    std::optional<Eigen::MatrixXd> as_indexed, as_plain;
+    std::exception_ptr indexed_error = by_count_error, plain_error;
+    if (by_count) {
+        try {
+            as_indexed = indexed_targets(*by_count, handles, targets_path, handles_path);
+        } catch (const InputError&) {
+            indexed_error = std::current_exception();
+        }
     }
-    return result;
+    std::string per;
+    if (dimension == 2) {
+        try {
+            const PositionRows plain =
+                read_position_rows(targets_path, dimension, num_vertices, RowLayout::plain);
+            as_plain = plain_targets(plain, handles, num_vertices, targets_path, handles_path, per);
+        } catch (const InputError&) {
+            plain_error = std::current_exception();
+        }
+    }
+    if (as_indexed && as_plain) {
+        throw InputError(targets_path + ": rows of three numbers fit both `index x y` (the handles "
+                         "of " + handles_path + ") and `x y 0` (one per " + per +
+                         "); write rows `x y`, or rows `index x y` without --handles");
+    }
+    if (as_indexed) {
+        result.targets = std::move(*as_indexed);
+        result.reading = "rows `index " + xy + "` of " + targets_path + handles_note;
+        return result;
+    }
+    if (as_plain) {
+        result.targets = std::move(*as_plain);
+        result.reading = "rows `x y 0` of " + targets_path + ", one per " + per + handles_note;
+        return result;
+    }
+    // Neither fits: the reading the first row's count of numbers names, unless its indices are
+    // no integers at all.
+    std::rethrow_exception(by_count && indexed_error ? indexed_error
+                           : plain_error             ? plain_error
+                                                     : indexed_error);
 }
 
 Eigen::MatrixXd move_handles(const Eigen::MatrixXd& rest, const HandleTargets& handle_targets) {
-    const auto& [handles, targets] = handle_targets;
+    const auto& handles = handle_targets.handles;
+    const auto& targets = handle_targets.targets;
     if (targets.rows() != static_cast<Eigen::Index>(handles.size()) ||
         (!handles.empty() && targets.cols() != rest.cols())) {
         throw InvalidArgumentError("move_handles: " + std::to_string(handles.size()) +

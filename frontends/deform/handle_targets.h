@@ -9,7 +9,10 @@
 //     rows `index x y z` (`index x y` in 2D) naming exactly the handles, in any order;
 //     rows `x y z` (`x y`): one per rest vertex (its rows at the handles) or one per handle (in
 //       the handle list's order); a file with as many rows as the mesh has vertices is read per
-//       vertex.
+//       vertex (refused when every vertex is a handle and the list is out of order);
+//     in 2D, rows of three numbers are `index x y` or `x y 0` (a planar target saved with z = 0):
+//       each reading is tried against the handles, the one that fits is taken, and a file that
+//       fits both is refused with a message naming both.
 //   targets alone                rows `index x y z`: the indices are the handles, in file order.
 // Row files are read by geometry/io/indexed_positions_io.h (comments, an optional count line,
 // a vertex listed twice at one position kept once, at two positions an error).
@@ -27,14 +30,17 @@ namespace sa {
 struct HandleTargets {
     std::vector<Index> handles;  ///< distinct vertices, 0-based
     Eigen::MatrixXd targets;     ///< #handles x d: row k is where handles[k] goes
+    /// How the files were read, for the summary: "rows `x y 0` of t.txt, one per handle", and the
+    /// handle list's first number when it could have been a count (index_list_io.h).
+    std::string reading = {};
 };
 
 /// Reads handles and targets for a mesh of `num_vertices` vertices mapped to `dimension` (2 or
 /// 3) coordinates; `handles_path` may be empty (targets alone). Throws InputError with a one-line
 /// message naming the file and, for a row, its line: a handle out of range, listed twice, or
 /// twice with two targets; a target row for a vertex that is not a handle, a handle without a
-/// target; a row count that is neither #V nor #H; no handle at all; non-finite or missing
-/// coordinates.
+/// target; a row count that is neither #V nor #H; rows that fit two layouts; no handle at all;
+/// non-finite or missing coordinates.
 HandleTargets read_handle_targets(const std::string& handles_path, const std::string& targets_path,
                                   Index num_vertices, int dimension);
 

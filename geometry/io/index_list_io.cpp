@@ -1,5 +1,6 @@
 #include "geometry/io/index_list_io.h"
 
+#include <algorithm>
 #include <limits>
 #include <unordered_map>
 
@@ -9,7 +10,7 @@
 
 namespace sa {
 
-std::vector<Index> read_index_list(const std::string& path, std::vector<int>* index_lines) {
+IndexList read_index_list(const std::string& path) {
     io::TextReader reader(path);
     std::vector<long long> values;
     std::vector<int> lines;
@@ -36,18 +37,26 @@ std::vector<Index> read_index_list(const std::string& path, std::vector<int>* in
         }
     }
     // A count line: one number alone on the first line that equals the number of indices after
-    // it. One that disagrees is an error when the file says it is a count (a comment on its
-    // line) or when the layout sets it apart (every line after it holds several indices);
-    // otherwise it is an index like the others.
+    // it, when its comment, the layout (every line after it holds several indices) or its own
+    // repetition marks it as one. One that disagrees is an error when its comment or the layout
+    // says it is a count; otherwise it is an index like the others.
     std::size_t first = 0;
+    bool first_may_be_count = false;
     if (!values.empty() && first_line_values == 1) {
         const auto following = static_cast<long long>(values.size() - 1);
+        const bool set_apart = first_line_comment || (apart && following > 0);
         if (values[0] == following) {
-            first = 1;
+            const bool repeated =
+                std::find(values.begin() + 1, values.end(), values[0]) != values.end();
+            if (set_apart || repeated) {
+                first = 1;
+            } else {
+                first_may_be_count = true;
+            }
         } else if (first_line_comment) {
             reader.fail_at(lines[0], "count header says " + std::to_string(values[0]) + " but " +
                                          std::to_string(following) + " indices follow");
-        } else if (apart && following > 0) {
+        } else if (set_apart) {
             reader.fail_at(lines[0], "the first line holds one number, " +
                                          std::to_string(values[0]) + ", apart from the " +
                                          std::to_string(following) +
@@ -55,9 +64,10 @@ std::vector<Index> read_index_list(const std::string& path, std::vector<int>* in
                                          "index? Correct the count, or put it with the others");
         }
     }
-    std::vector<Index> indices;
-    indices.reserve(values.size() - first);
-    if (index_lines) index_lines->clear();
+    IndexList list;
+    list.first_may_be_count = first_may_be_count;
+    list.indices.reserve(values.size() - first);
+    list.lines.reserve(values.size() - first);
     std::unordered_map<Index, int> first_line_of;
     for (std::size_t i = first; i < values.size(); ++i) {
         const auto index = static_cast<Index>(values[i]);
@@ -66,10 +76,18 @@ std::vector<Index> read_index_list(const std::string& path, std::vector<int>* in
             reader.fail_at(lines[i], "index " + std::to_string(index) +
                                          " repeated (first on line " + std::to_string(it->second) +
                                          ")");
-        indices.push_back(index);
-        if (index_lines) index_lines->push_back(lines[i]);
+        list.indices.push_back(index);
+        list.lines.push_back(lines[i]);
     }
-    return indices;
+    return list;
+}
+
+std::string first_number_reading(const std::string& path, const IndexList& list) {
+    if (!list.first_may_be_count || list.indices.empty()) return "";
+    const std::string n = std::to_string(list.indices.front());
+    return path + ":" + std::to_string(list.lines.front()) + ": " + n +
+           " read as an index, not as the count of the " + n +
+           " numbers after it (a count line says so: `" + n + " # count`)";
 }
 
 void write_index_list(const std::string& path, const std::vector<Index>& indices) {
@@ -86,7 +104,7 @@ void write_index_list(const std::string& path, const std::vector<Index>& indices
     }
     AtomicFile file(path);
     std::ostream& out = file.stream();
-    out << indices.size() << '\n';
+    out << indices.size() << " # count\n";
     for (const Index index : indices) out << index << '\n';
     file.commit();
 }

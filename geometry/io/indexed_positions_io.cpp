@@ -8,7 +8,8 @@
 
 namespace sa {
 
-PositionRows read_position_rows(const std::string& path, int dimension, Index num_vertices) {
+PositionRows read_position_rows(const std::string& path, int dimension, Index num_vertices,
+                                RowLayout layout) {
     if (dimension != 2 && dimension != 3) {
         throw InvalidArgumentError("read_position_rows: dimension " + std::to_string(dimension) +
                                    " (expected 2 or 3)");
@@ -36,18 +37,27 @@ PositionRows read_position_rows(const std::string& path, int dimension, Index nu
         first_line = false;
         const int n = static_cast<int>(tokens.size());
         if (columns == 0) {
-            if (n != dimension && n != dimension + 1) {
-                reader.fail(std::to_string(n) + " numbers; expected rows of " + indexed + " or " +
-                            plain);
+            // d + 1 numbers: `index x y (z)` by count, `x y 0` in the plain layout in 2D.
+            const bool one_more = layout == RowLayout::by_count || dimension == 2;
+            if (n != dimension && !(n == dimension + 1 && one_more)) {
+                reader.fail(std::to_string(n) + " numbers; expected rows of " +
+                            (layout == RowLayout::by_count ? indexed + " or " + plain : plain));
             }
             columns = n;
         } else if (n != columns) {
             reader.fail(std::to_string(n) + " numbers, the rows before have " +
-                        std::to_string(columns) + " (" + (columns == dimension ? plain : indexed) +
+                        std::to_string(columns) + " (" +
+                        (columns == dimension || layout == RowLayout::plain ? plain : indexed) +
                         ")");
         }
         ++file_rows;
-        const bool with_index = columns == dimension + 1;
+        const bool with_index = columns == dimension + 1 && layout == RowLayout::by_count;
+        if (columns == dimension + 1 && !with_index) {  // `x y 0`: a planar position
+            const double z = reader.to_double(tokens[dimension], "coordinate");
+            if (z != 0.0)
+                reader.fail("z = " + std::string(tokens[dimension]) + "; rows " + plain +
+                            " of a planar map may have a third coordinate only when it is 0");
+        }
         long long index = -1;
         if (with_index) {
             index = reader.to_integer(tokens[0], "vertex index");

@@ -544,7 +544,7 @@ std::vector<Case> catalogue() {
          },
          "map --rest {D}/p.txt --handles {D}/h.txt --out {D}/o.vtu",
          2,
-         {"{D}/h.txt: handle vertex 99 outside [0, 16)"}},
+         {"{D}/h.txt:1: handle vertex 99 outside [0, 16)"}},
         {"HandleNegative",
          [](const Inputs& in) {
              problem(in);
@@ -890,6 +890,16 @@ std::vector<Case> catalogue() {
          0,
          {"4 handles", "success: verified"},
          {"o.obj", "o.png"}},
+        // One per line, the first number equal to the count after it: an index, said so.
+        {"HandlesFirstNumberCouldBeACount",
+         [](const Inputs& in) {
+             in.text("p.txt", grid_problem(6, {0, 5, 30, 35}));
+             in.text("h.txt", "3\n0\n5\n35\n");
+         },
+         "map --rest {D}/p.txt --handles {D}/h.txt --out {D}/o.obj --quiet --no-png",
+         0,
+         {"4 handles", "h.txt:1: 3 read as an index", "success: verified"},
+         {"o.obj"}},
         {"MeshAt1e200",
          [](const Inputs& in) {
              in.text("p.txt", grid_problem(4, grid_boundary(4), {{5, {0.9e200, 0.9e200}}}, 1e200));
@@ -1036,6 +1046,40 @@ std::vector<Case> catalogue() {
                      0,
                      {"success: verified"},
                      {"o.obj"}});
+    // The same posed by a handle list and rows `x y 0`, one per handle (z = 0, as a planar
+    // target saved with three coordinates): their first numbers, 0 and 1, read as indices would
+    // give vertices 0 and 1 two targets each, so the rows are positions.
+    const auto planar_handles = [](const Inputs& in, bool indices_fit) {
+        const SimplicialMesh grid = grid_triangles(4, 4);
+        in.mesh("plane.off", grid);
+        std::ostringstream handles, rows;
+        for (Index v = 0; v < grid.num_vertices(); ++v) {
+            const double x = grid.vertices(v, 0);
+            if (x > 0.0 && x < 1.0) continue;
+            handles << v << '\n';
+            if (indices_fit) {
+                rows << v << ' ' << x + 0.1 * double(v % 3) << " 0\n";
+            } else {
+                rows << x << ' ' << grid.vertices(v, 1) + (x > 0.5 ? 0.2 : 0.0) << " 0\n";
+            }
+        }
+        in.text("h.txt", handles.str());
+        in.text("t.txt", rows.str());
+    };
+    cases.push_back({"DeformPlanarTargetsXy0PerHandle",
+                     [&](const Inputs& in) { planar_handles(in, false); },
+                     "deform --rest {D}/plane.off --handles {D}/h.txt --targets {D}/t.txt --out "
+                     "{D}/o.obj --quiet --no-png",
+                     0,
+                     {"rows `x y 0` of", "one per handle", "success: verified"},
+                     {"o.obj"}});
+    // Rows whose first numbers are the handles and whose last are 0 fit both readings.
+    cases.push_back({"DeformPlanarTargetsFitTwoReadings",
+                     [&](const Inputs& in) { planar_handles(in, true); },
+                     "deform --rest {D}/plane.off --handles {D}/h.txt --targets {D}/t.txt --out "
+                     "{D}/o.obj",
+                     2,
+                     {"{D}/t.txt: rows of three numbers fit both `index x y`", "`x y 0`"}});
     cases.push_back({"DeformOutAndReportTheSame",
                      lifted_box,
                      "deform --rest {D}/box.mesh --targets {D}/t.txt --out {D}/o.vtu --report "

@@ -87,6 +87,51 @@ TEST(HandleTargets, PlanarMapsReadTwoCoordinates) {
     EXPECT_EQ(g.targets(0, 1), 2.0);
 }
 
+// In 2D, rows of three numbers are `index x y` or `x y 0`: the reading that fits the handles is
+// taken and named; a file that fits both is refused, naming both.
+TEST(HandleTargets, PlanarRowsOfThreeNumbersTakeTheReadingThatFits) {
+    TempFolder folder;
+    const std::string handles = folder.write("h.txt", "2\n6\n8\n");
+    // Integer coordinates with z = 0, one row per handle: as `index x y` the indices 3, 1, 0 are
+    // no handles, so they are `x y 0`.
+    const HandleTargets plain =
+        read_handle_targets(handles, folder.write("xyz.txt", "3 0 0\n1 2 0\n0 2 0\n"), 9, 2);
+    EXPECT_EQ(plain.handles, (std::vector<Index>{2, 6, 8}));
+    ASSERT_EQ(plain.targets.cols(), 2);
+    EXPECT_EQ(plain.targets.row(0), Eigen::RowVector2d(3, 0));
+    EXPECT_EQ(plain.targets.row(2), Eigen::RowVector2d(0, 2));
+    EXPECT_NE(plain.reading.find("rows `x y 0` of"), std::string::npos) << plain.reading;
+    EXPECT_NE(plain.reading.find("one per handle"), std::string::npos) << plain.reading;
+    // Non-integer first numbers: only `x y 0` fits.
+    EXPECT_EQ(read_handle_targets(handles, folder.write("f.txt", "0.5 0 0\n1 2 0\n0 2 0\n"), 9, 2)
+                  .targets(0, 0),
+              0.5);
+    // The handles as indices, with a y that is not 0: `index x y`.
+    const HandleTargets indexed =
+        read_handle_targets(handles, folder.write("ixy.txt", "8 1 1\n2 0 0.5\n6 2 0\n"), 9, 2);
+    EXPECT_EQ(indexed.targets.row(0), Eigen::RowVector2d(0, 0.5));
+    EXPECT_EQ(indexed.targets.row(2), Eigen::RowVector2d(1, 1));
+    EXPECT_NE(indexed.reading.find("rows `index x y` of"), std::string::npos) << indexed.reading;
+    // Both fit (the first numbers are the handles, the last are 0): refused.
+    EXPECT_TRUE(throws_input_error(
+        [&] {
+            read_handle_targets(handles, folder.write("both.txt", "2 1 0\n6 2 0\n8 3 0\n"), 9, 2);
+        },
+        {"both.txt: rows of three numbers fit both `index x y`", "and `x y 0` (one per handle)",
+         "write rows `x y`"}));
+    // Neither fits: the `index x y` reading's reason.
+    EXPECT_TRUE(throws_input_error(
+        [&] { read_handle_targets(handles, folder.write("no.txt", "2 1 1\n5 2 1\n"), 9, 2); },
+        {"no.txt:2: vertex 5 is not a handle of"}));
+    // A handle list whose first number could be a count is read as a handle, and said so.
+    const HandleTargets counted =
+        read_handle_targets(folder.write("c.txt", "2\n0\n1\n"),
+                            folder.write("c3.txt", "0.5 0\n1 1\n0 1\n"), 9, 2);
+    EXPECT_EQ(counted.handles, (std::vector<Index>{2, 0, 1}));
+    EXPECT_NE(counted.reading.find("c.txt:1: 2 read as an index"), std::string::npos)
+        << counted.reading;
+}
+
 TEST(HandleTargets, BadHandlesGiveOneLineNamingFileAndLine) {
     TempFolder folder;
     const Fixture f;

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
@@ -28,6 +29,7 @@
 #include "geometry/io/tetgen_io.h"
 #include "geometry/io/vtk_io.h"
 #include "geometry/mesh_generators.h"
+#include "optim/errors.h"
 
 namespace sa::fuzz {
 namespace {
@@ -316,13 +318,27 @@ void run_indexed_positions(const std::uint8_t* data, std::size_t size) {
     // The last byte: its low bit the dimension (2 or 3), the rest the vertex count plus one (0:
     // no range check).
     const std::uint8_t b = data[size - 1];
-    read_position_rows(write("targets.txt", data, size - 1), 2 + (b & 1), Index(b >> 1) - 1);
+    // Both layouts, as deform/handle_targets.h reads them; refused when neither reads it.
+    const std::string path = write("targets.txt", data, size - 1);
+    const int dimension = 2 + (b & 1);
+    std::exception_ptr refused;
+    try {
+        read_position_rows(path, dimension, Index(b >> 1) - 1);
+    } catch (const sa::Error&) {
+        refused = std::current_exception();
+    }
+    try {
+        read_position_rows(path, dimension, Index(b >> 1) - 1, RowLayout::plain);
+    } catch (const sa::Error&) {
+        if (refused) std::rethrow_exception(refused);
+    }
 }
 std::vector<Bytes> seeds_indexed_positions() {
     return {with_trailer(bytes("2\n0 0.5 0.5 0\n3 1 2 3 # moved\n"), {1 + 2 * 5}),
             with_trailer(bytes("0 1 1\r\n4 -1 2.5e3\r\n0 1 1\r\n"), {0 + 2 * 9}),
             with_trailer(bytes("# plain\n0 0\n1 0\n0 1\n"), {0}),
-            with_trailer(bytes("1 2 3\n4 5 6\n"), {1})};
+            with_trailer(bytes("1 2 3\n4 5 6\n"), {1}),
+            with_trailer(bytes("2\n1.5 2 0\n4 5 0\n"), {0 + 2 * 6})};
 }
 
 void run_polycube_labels(const std::uint8_t* data, std::size_t size) {

@@ -110,7 +110,7 @@ TEST_F(SharedData, TetGenDeformationsAndHandles) {
                 EXPECT_EQ(file.mesh.simplices, rest_tets);
         }
         const std::vector<Index> handles =
-            read_index_list(path("deform/" + name + "/" + name + "_handles.txt"));
+            read_index_list(path("deform/" + name + "/" + name + "_handles.txt")).indices;
         EXPECT_EQ(handles.size(), counts.handles) << name;
         EXPECT_LT(*std::max_element(handles.begin(), handles.end()), counts.vertices) << name;
     }
@@ -125,7 +125,8 @@ TEST_F(SharedData, WrenchMeditAndLockedVertices) {
         EXPECT_EQ(file.mesh.num_simplices(), 50122);
         EXPECT_EQ(file.mesh.simplices.cols(), 4);
     }
-    const std::vector<Index> locked = read_index_list(path("deform/wrench/wrench-lock.txt"));
+    const std::vector<Index> locked =
+        read_index_list(path("deform/wrench/wrench-lock.txt")).indices;
     EXPECT_EQ(locked.size(), 4792u);  // the count header "4792 #Vertices Locked" is dropped
     EXPECT_EQ(locked.front(), 0);
     EXPECT_LT(*std::max_element(locked.begin(), locked.end()), 14798);
