@@ -51,6 +51,7 @@ DeformStart deform_start(const SimplicialMesh& mesh, const HandleTargets& handle
             "simplices of dimension " +
             std::to_string(d) + " in " + std::to_string(mesh.ambient_dimension()) + "D");
     }
+    check_target_reach(mesh.vertices, handle_targets);
     return d == 2 ? start_in<2>(mesh, handle_targets, options, logger)
                   : start_in<3>(mesh, handle_targets, options, logger);
 }

@@ -1,6 +1,7 @@
 #include "frontends/deform/handle_targets.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <exception>
 #include <optional>
 #include <set>
@@ -57,12 +58,26 @@ std::string vertices_text(Index n) {
 
 namespace {
 
+/// `path:line` of each row.
+std::vector<std::string> row_origins(const std::string& path, const std::vector<int>& lines) {
+    std::vector<std::string> origins;
+    origins.reserve(lines.size());
+    for (const int line : lines) origins.push_back(path + ":" + std::to_string(line));
+    return origins;
+}
+
+struct Targets {
+    Eigen::MatrixXd positions;         ///< #handles x d
+    std::vector<std::string> origins;  ///< #handles
+};
+
 /// Targets from rows `index x y (z)`: exactly the handles, in any order.
-Eigen::MatrixXd indexed_targets(const PositionRows& rows, const IndexList& handles,
-                                const std::string& targets_path, const std::string& handles_path) {
+Targets indexed_targets(const PositionRows& rows, const IndexList& handles,
+                        const std::string& targets_path, const std::string& handles_path) {
     std::unordered_map<Index, std::size_t> slot;
     for (std::size_t k = 0; k < handles.indices.size(); ++k) slot[handles.indices[k]] = k;
     Eigen::MatrixXd targets(handles.indices.size(), rows.positions.cols());
+    std::vector<std::string> origins(handles.indices.size());
     std::vector<unsigned char> given(handles.indices.size(), 0);
     for (std::size_t r = 0; r < rows.indices.size(); ++r) {
         const auto it = slot.find(rows.indices[r]);
@@ -72,6 +87,7 @@ Eigen::MatrixXd indexed_targets(const PositionRows& rows, const IndexList& handl
                              handles_path);
         }
         targets.row(it->second) = rows.positions.row(r);
+        origins[it->second] = targets_path + ":" + std::to_string(rows.lines[r]);
         given[it->second] = 1;
     }
     for (std::size_t k = 0; k < given.size(); ++k) {
@@ -81,14 +97,14 @@ Eigen::MatrixXd indexed_targets(const PositionRows& rows, const IndexList& handl
                              std::to_string(handles.lines[k]) + ")");
         }
     }
-    return targets;
+    return {std::move(targets), std::move(origins)};
 }
 
 /// Targets from rows `x y (z)`: one per vertex or one per handle, in the handle list's order.
 /// `per` receives "vertex" or "handle".
-Eigen::MatrixXd plain_targets(const PositionRows& rows, const IndexList& handles,
-                              Index num_vertices, const std::string& targets_path,
-                              const std::string& handles_path, std::string& per) {
+Targets plain_targets(const PositionRows& rows, const IndexList& handles, Index num_vertices,
+                      const std::string& targets_path, const std::string& handles_path,
+                      std::string& per) {
     const Index n = static_cast<Index>(rows.positions.rows());
     const Index num_handles = static_cast<Index>(handles.indices.size());
     // Every vertex a handle, listed out of order: a row per vertex and a row per handle differ.
@@ -99,13 +115,16 @@ Eigen::MatrixXd plain_targets(const PositionRows& rows, const IndexList& handles
                          ", whose order differs; give rows `index x y" +
                          (rows.positions.cols() == 3 ? " z`" : "`") + " instead");
     }
+    const std::vector<std::string> origins = row_origins(targets_path, rows.lines);
     if (n == num_vertices) {
         per = "vertex";
-        return rows_at(rows.positions, handles.indices);
+        std::vector<std::string> at_handles;
+        for (const Index h : handles.indices) at_handles.push_back(origins[h]);
+        return {rows_at(rows.positions, handles.indices), std::move(at_handles)};
     }
     if (n == num_handles) {
         per = "handle";
-        return rows.positions;
+        return {rows.positions, origins};
     }
     throw InputError(targets_path + ": " + std::to_string(n) + " rows; expected one per vertex (" +
                      std::to_string(num_vertices) + ") or one per handle of " + handles_path +
@@ -139,6 +158,7 @@ HandleTargets read_handle_targets(const std::string& handles_path, const std::st
         }
         result.handles = std::move(rows.indices);
         result.targets = std::move(rows.positions);
+        result.origins = row_origins(targets_path, rows.lines);
         result.reading = "rows `index " + xy + "` of " + targets_path;
         return result;
     }
@@ -165,6 +185,8 @@ HandleTargets read_handle_targets(const std::string& handles_path, const std::st
                              ", the rest mesh has " + std::to_string(num_vertices));
         }
         result.targets = rows_at(positions, result.handles);
+        for (const Index h : result.handles)
+            result.origins.push_back(targets_path + " (vertex " + std::to_string(h) + ")");
         result.reading = handles_path + " at their vertices of " + targets_path + handles_note;
         return result;
     }
@@ -181,12 +203,14 @@ HandleTargets read_handle_targets(const std::string& handles_path, const std::st
     }
     if (by_count && !by_count->indexed()) {
         std::string per;
-        result.targets = plain_targets(*by_count, handles, num_vertices, targets_path,
-                                       handles_path, per);
+        Targets plain =
+            plain_targets(*by_count, handles, num_vertices, targets_path, handles_path, per);
+        result.targets = std::move(plain.positions);
+        result.origins = std::move(plain.origins);
         result.reading = "rows `" + xy + "` of " + targets_path + ", one per " + per + handles_note;
         return result;
     }
-    std::optional<Eigen::MatrixXd> as_indexed, as_plain;
+    std::optional<Targets> as_indexed, as_plain;
     std::exception_ptr indexed_error = by_count_error, plain_error;
     if (by_count) {
         try {
@@ -211,12 +235,14 @@ HandleTargets read_handle_targets(const std::string& handles_path, const std::st
                          "); write rows `x y`, or rows `index x y` without --handles");
     }
     if (as_indexed) {
-        result.targets = std::move(*as_indexed);
+        result.targets = std::move(as_indexed->positions);
+        result.origins = std::move(as_indexed->origins);
         result.reading = "rows `index " + xy + "` of " + targets_path + handles_note;
         return result;
     }
     if (as_plain) {
-        result.targets = std::move(*as_plain);
+        result.targets = std::move(as_plain->positions);
+        result.origins = std::move(as_plain->origins);
         result.reading = "rows `x y 0` of " + targets_path + ", one per " + per + handles_note;
         return result;
     }
@@ -225,6 +251,27 @@ HandleTargets read_handle_targets(const std::string& handles_path, const std::st
     std::rethrow_exception(by_count && indexed_error ? indexed_error
                            : plain_error             ? plain_error
                                                      : indexed_error);
+}
+
+void check_target_reach(const Eigen::MatrixXd& rest, const HandleTargets& handle_targets) {
+    if (rest.rows() == 0 || handle_targets.targets.cols() != rest.cols()) return;
+    const Eigen::RowVectorXd low = rest.colwise().minCoeff(), high = rest.colwise().maxCoeff();
+    const double diagonal = (high - low).stableNorm();
+    for (Eigen::Index k = 0; k < handle_targets.targets.rows(); ++k) {
+        const Eigen::RowVectorXd target = handle_targets.targets.row(k);
+        const double distance = (target - target.cwiseMax(low).cwiseMin(high)).stableNorm();
+        if (distance <= kMaxPoseStretch * diagonal) continue;
+        const std::size_t at = static_cast<std::size_t>(k);
+        char numbers[200];
+        std::snprintf(numbers, sizeof numbers,
+                      " lies %.3g from the rest shape, %.3g times its diagonal; a pose may "
+                      "stretch the rest shape at most %g times",
+                      distance, distance / diagonal, kMaxPoseStretch);
+        throw InputError(
+            (at < handle_targets.origins.size() ? handle_targets.origins[at] + ": " : "") +
+            "the target of handle vertex " + std::to_string(handle_targets.handles[at]) + numbers +
+            " (beyond, its distortions overflow double arithmetic)");
+    }
 }
 
 Eigen::MatrixXd move_handles(const Eigen::MatrixXd& rest, const HandleTargets& handle_targets) {

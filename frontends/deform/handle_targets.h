@@ -33,7 +33,15 @@ struct HandleTargets {
     /// How the files were read, for the summary: "rows `x y 0` of t.txt, one per handle", and the
     /// handle list's first number when it could have been a count (index_list_io.h).
     std::string reading = {};
+    /// Where each target was read, for messages: "t.txt:12", "t.node (vertex 7)"; empty for
+    /// targets built in code.
+    std::vector<std::string> origins = {};
 };
+
+/// The most a pose may stretch its rest shape: no target farther than this many rest diagonals
+/// from the rest shape's bounding box. A stretch s gives a tetrahedron's volume s^3 times its
+/// own, and the distortions and energies powers of s: at 1e100 they stay finite in doubles.
+inline constexpr double kMaxPoseStretch = 1e100;
 
 /// Reads handles and targets for a mesh of `num_vertices` vertices mapped to `dimension` (2 or
 /// 3) coordinates; `handles_path` may be empty (targets alone). Throws InputError with a one-line
@@ -43,6 +51,11 @@ struct HandleTargets {
 /// non-finite or missing coordinates.
 HandleTargets read_handle_targets(const std::string& handles_path, const std::string& targets_path,
                                   Index num_vertices, int dimension);
+
+/// Throws InputError naming the target (its origin, the vertex and its distance) when one lies
+/// more than kMaxPoseStretch rest diagonals from the bounding box of `rest` (#V x d): its pose
+/// would overflow double arithmetic, and no solve could say why.
+void check_target_reach(const Eigen::MatrixXd& rest, const HandleTargets& handle_targets);
 
 /// The rest positions (#V x d) with the handles moved to their targets: the start of the
 /// local/global iterations. Throws InvalidArgumentError on inconsistent sizes or an index out of

@@ -1012,6 +1012,14 @@ std::vector<Case> catalogue() {
                      "deform --rest {D}/box.mesh --targets {D}/t.txt --out {D}/o.vtu",
                      2,
                      {"{D}/t.txt:2:"}});
+    cases.push_back({"DeformTargetBeyondDoubleArithmetic",
+                     [&](const Inputs& in) {
+                         lifted_box(in);
+                         in.text("t.txt", in.read("t.txt") + "13 1e308 0 0\n");  // the centre
+                     },
+                     "deform --rest {D}/box.mesh --targets {D}/t.txt --out {D}/o.vtu",
+                     2,
+                     {"{D}/t.txt:", "the target of handle vertex 13 lies 1e+308 from the rest"}});
     cases.push_back({"DeformOptimalBoundWithABound",
                      lifted_box,
                      "deform --rest {D}/box.mesh --targets {D}/t.txt --out {D}/o.vtu "

@@ -132,6 +132,25 @@ TEST(HandleTargets, PlanarRowsOfThreeNumbersTakeTheReadingThatFits) {
         << counted.reading;
 }
 
+// A target so far from the rest shape that its pose overflows is named with its file and line.
+TEST(HandleTargets, ATargetBeyondDoubleArithmeticIsNamed) {
+    TempFolder folder;
+    const SimplicialMesh grid = grid_triangles(2, 2);  // the unit square, 9 vertices
+    HandleTargets far = read_handle_targets("", folder.write("t.txt", "0 0 0\n8 1 1e200\n"), 9, 2);
+    EXPECT_EQ(far.origins, (std::vector<std::string>{folder.path("t.txt") + ":1",
+                                                     folder.path("t.txt") + ":2"}));
+    EXPECT_TRUE(throws_input_error([&] { check_target_reach(grid.vertices, far); },
+                                   {"t.txt:2: the target of handle vertex 8 lies 1e+200"}));
+    far.targets(1, 1) = 1e90;  // far, but representable
+    check_target_reach(grid.vertices, far);
+    // Relative to the rest shape's size: the same square at 1e-200 cannot reach 1.
+    HandleTargets near = far;
+    near.targets(1, 1) = 1.0;
+    check_target_reach(grid.vertices, near);
+    EXPECT_TRUE(throws_input_error([&] { check_target_reach(1e-200 * grid.vertices, near); },
+                                   {"handle vertex 8", "times its diagonal"}));
+}
+
 TEST(HandleTargets, BadHandlesGiveOneLineNamingFileAndLine) {
     TempFolder folder;
     const Fixture f;
