@@ -173,4 +173,53 @@ std::vector<Index> MeshTopology::simplex_components(Index* count) const {
     return component;
 }
 
+namespace {
+
+/// The number of pieces the simplices around `v` form through the facets that contain `v`.
+int star_pieces(const SimplicialMesh& mesh, const MeshTopology& topology, Index v) {
+    const Index begin = topology.vertex_begin[v], end = topology.vertex_begin[v + 1];
+    std::vector<Index> reached;  // the star's simplices, piece by piece
+    int pieces = 0;
+    for (Index i = begin; i < end; ++i) {
+        const Index seed = topology.simplices_of_vertex[i];
+        if (std::find(reached.begin(), reached.end(), seed) != reached.end()) continue;
+        ++pieces;
+        std::size_t next = reached.size();
+        reached.push_back(seed);
+        for (; next < reached.size(); ++next) {
+            const Index s = reached[next];
+            for (int k = 0; k <= topology.dimension; ++k) {
+                if (mesh.simplices(s, k) == v) continue;  // the facet opposite v: not through v
+                const Index t = topology.neighbour_of(s, k);
+                if (t >= 0 && std::find(reached.begin(), reached.end(), t) == reached.end())
+                    reached.push_back(t);
+            }
+        }
+    }
+    return pieces;
+}
+
+}  // namespace
+
+std::vector<Index> pinched_vertices(const SimplicialMesh& mesh, const MeshTopology& topology) {
+    std::vector<Index> pinched;
+    for (Index v = 0; v + 1 < Index(topology.vertex_begin.size()); ++v) {
+        if (topology.vertex_begin[v + 1] - topology.vertex_begin[v] < 2) continue;
+        if (star_pieces(mesh, topology, v) > 1) pinched.push_back(v);
+    }
+    return pinched;
+}
+
+void require_no_pinched_vertex(const SimplicialMesh& mesh, const MeshTopology& topology,
+                               const std::string& source, const std::string& needs) {
+    const std::vector<Index> pinched = pinched_vertices(mesh, topology);
+    if (pinched.empty()) return;
+    const bool triangles = topology.dimension == 2;
+    throw InputError(source + ": pinched at vertex " + std::to_string(pinched.front()) + ": its " +
+                     (triangles ? "triangles" : "tetrahedra") + " form " +
+                     std::to_string(star_pieces(mesh, topology, pinched.front())) +
+                     " pieces that share no " + (triangles ? "edge" : "face") + " through it (" +
+                     std::to_string(pinched.size()) + " such vertices); " + needs);
+}
+
 }  // namespace sa

@@ -46,6 +46,16 @@ struct MeshTopology {
     std::vector<Index> simplex_components(Index* count) const;
 };
 
+/// The vertices where the mesh is pinched: their simplices do not form one piece through the
+/// facets that contain the vertex (a bowtie's middle vertex, two solids touching at a vertex),
+/// in increasing order. Such a vertex has no single disk (ball) of simplices around it.
+std::vector<Index> pinched_vertices(const SimplicialMesh& mesh, const MeshTopology& topology);
+
+/// Throws InputError "SOURCE: pinched at vertex V: its triangles (tetrahedra) form N pieces that
+/// share no edge (face) through it (K such vertices); NEEDS" when pinched_vertices() finds one.
+void require_no_pinched_vertex(const SimplicialMesh& mesh, const MeshTopology& topology,
+                               const std::string& source, const std::string& needs);
+
 /// Builds the adjacency of `mesh`. Throws InputError naming `source` and the facet when a facet is
 /// shared by more than two simplices, or, for triangles in space, when two triangles sharing an
 /// edge are oriented inconsistently.

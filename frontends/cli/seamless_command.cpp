@@ -109,10 +109,10 @@ int run_seamless_command(const SeamlessArguments& a) {
 
     const MeshFile file = read_input_mesh("--mesh", a.mesh, "seamless parameterization");
     const SimplicialMesh& mesh = file.mesh;
-    // The checks the pipeline makes, here with the file's name: a valid, manifold and
+    // The checks the pipeline makes, here with the file's name: a valid, manifold, unpinched and
     // consistently oriented surface.
     validate_mesh(mesh, a.mesh);
-    mesh_topology(mesh, a.mesh);
+    require_no_pinched_vertex(mesh, mesh_topology(mesh, a.mesh), a.mesh, kSeamlessSurface);
     std::optional<FrameFieldInput> field;
     std::string field_layout;
     if (!a.field.empty() || !a.constraints.empty()) {

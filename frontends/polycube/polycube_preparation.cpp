@@ -8,6 +8,7 @@
 
 #include "geometry/io/mesh_file.h"
 #include "geometry/io/polycube_labels_io.h"
+#include "geometry/mesh_topology.h"
 #include "geometry/polycube_label_transfer.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
@@ -252,6 +253,11 @@ PreparedPolycube prepare_polycube(const SimplicialMesh& mesh, const std::string&
     const MeshTopology topology = mesh_topology(mesh, source);
     const TetBoundary boundary = tet_boundary(mesh, topology);
     require_manifold_boundary(boundary, source);
+    SimplicialMesh surface;
+    surface.vertices = mesh.vertices;
+    surface.simplices = boundary.triangles;
+    require_no_pinched_vertex(surface, mesh_topology(surface, source), source,
+                              "a PolyCube map needs a boundary that is a closed manifold surface");
     SimplicialMesh oriented = mesh;
     std::vector<int> labels;
     if (input.flags.empty() && input.labels.empty() && input.surface.empty()) {

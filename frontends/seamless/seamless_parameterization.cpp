@@ -6,6 +6,7 @@
 
 #include "frontends/seamless/cone_obstruction.h"
 #include "geometry/cut_graph.h"
+#include "geometry/mesh_topology.h"
 #include "geometry/frame_field.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
@@ -97,8 +98,9 @@ SeamlessResult seamless_parameterization(const SimplicialMesh& input,
         r.surface.vertices.col(2).setZero();
     }
     const SimplicialMesh& mesh = r.surface;
-    // Also rejects a non-manifold or inconsistently oriented surface.
+    // Also rejects a non-manifold or inconsistently oriented surface, and a pinched one.
     const MeshTopology topology = mesh_topology(mesh, "mesh");
+    require_no_pinched_vertex(mesh, topology, "mesh", kSeamlessSurface);
     const RestFrames<2> frames = rest_frames<2>(mesh);
     const Index nf = mesh.num_simplices();
 

@@ -103,8 +103,14 @@ struct SeamlessResult {
     std::string message;  ///< what was verified, in a sentence or two
 };
 
-/// `mesh`: a triangle mesh in space (#V x 3; a planar one gets z = 0), manifold and oriented.
-/// Throws InputError for a mesh or field that cannot be used (naming the face or vertex).
+/// What a pinched surface is refused with (mesh_topology.h, require_no_pinched_vertex).
+inline constexpr const char* kSeamlessSurface =
+    "a seamless parameterization needs a manifold surface (one fan of triangles around each "
+    "vertex)";
+
+/// `mesh`: a triangle mesh in space (#V x 3; a planar one gets z = 0), manifold (no pinched
+/// vertex) and oriented. Throws InputError for a mesh or field that cannot be used (naming the
+/// face or vertex).
 SeamlessResult seamless_parameterization(const SimplicialMesh& mesh,
                                          const std::optional<FrameFieldInput>& field,
                                          const SeamlessOptions& options = {},

@@ -954,6 +954,44 @@ std::vector<Case> catalogue() {
                      0,
                      {"conformal max 1 ", "success: verified"},
                      {"o.obj", "o.png"}});
+    // Pinched surfaces: a bowtie to `sa seamless`, two boxes touching at a corner to `sa
+    // polycube`.
+    cases.push_back({"SeamlessBowtie",
+                     [](const Inputs& in) {
+                         in.text("bow.off",
+                                 "OFF\n5 2 0\n0 0 0\n1 0 0\n0.5 0.5 0\n0 1 0\n1 1 0\n"
+                                 "3 0 1 2\n3 2 4 3\n");
+                     },
+                     "seamless --mesh {D}/bow.off --out {D}/s.obj",
+                     2,
+                     {"{D}/bow.off: pinched at vertex 2"}});
+    cases.push_back({"PolycubeTwoBoxesTouchingAtACorner",
+                     [](const Inputs& in) {
+                         // The unit cube's tetrahedra and a copy moved by (1, 1, 1), whose corner
+                         // at (1, 1, 1) is the cube's own vertex there.
+                         const SimplicialMesh box = grid_tetrahedra(1, 1, 1);
+                         const Index n = box.num_vertices();
+                         Index corner = 0, origin = 0;
+                         for (Index v = 0; v < n; ++v) {
+                             if (box.vertices.row(v).minCoeff() == 1.0) corner = v;
+                             if (box.vertices.row(v).maxCoeff() == 0.0) origin = v;
+                         }
+                         SimplicialMesh two;
+                         two.vertices.resize(2 * n, 3);
+                         two.vertices << box.vertices,
+                             box.vertices.rowwise() + Eigen::RowVector3d(1, 1, 1);
+                         two.simplices.resize(2 * box.num_simplices(), 4);
+                         two.simplices << box.simplices, box.simplices.array() + int(n);
+                         for (Index t = box.num_simplices(); t < two.num_simplices(); ++t)
+                             for (int k = 0; k < 4; ++k)
+                                 if (two.simplices(t, k) == int(n + origin)) two.simplices(t, k) = int(corner);
+                         // The copy's origin is used by no tetrahedron now: moved far off.
+                         two.vertices.row(n + origin) << 9, 9, 9;
+                         in.mesh("two.mesh", two);
+                     },
+                     "polycube --mesh {D}/two.mesh --out {D}/p.mesh",
+                     2,
+                     {"{D}/two.mesh: pinched at vertex"}});
     // `sa deform`: a 2 x 2 x 2 box of tetrahedra, its x = 0 face fixed and its x = 1 face
     // lifted, as rows `index x y z`.
     const auto lifted_box = [](const Inputs& in) {

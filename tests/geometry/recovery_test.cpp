@@ -118,6 +118,52 @@ TEST(MeshTopology, CountsAndErrors) {
     EXPECT_THROW(mesh_topology(flipped, "flipped.obj"), InputError);
 }
 
+// A bowtie and two boxes of tetrahedra touching at a corner are pinched there; a grid, a fan
+// around one vertex and a closed sphere are not.
+TEST(MeshTopology, PinchedVerticesAreFound) {
+    SimplicialMesh bowtie;
+    bowtie.vertices.resize(5, 2);
+    bowtie.vertices << 0, 0, 1, 0, 0.5, 0.5, 0, 1, 1, 1;
+    bowtie.simplices.resize(2, 3);
+    bowtie.simplices << 0, 1, 2, 2, 4, 3;
+    const MeshTopology bowtie_topology = mesh_topology(bowtie, "bowtie");
+    EXPECT_EQ(pinched_vertices(bowtie, bowtie_topology), (std::vector<Index>{2}));
+    try {
+        require_no_pinched_vertex(bowtie, bowtie_topology, "bowtie.off", "needs a fan");
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "bowtie.off: pinched at vertex 2: its triangles form 2 pieces that share no "
+                  "edge through it (1 such vertices); needs a fan");
+    }
+
+    SimplicialMesh boxes = grid_tetrahedra(1, 1, 1);  // the unit cube, and a copy at (1, 1, 1)
+    const Index n = boxes.num_vertices();
+    Eigen::MatrixXd vertices(2 * n, 3);
+    vertices << boxes.vertices, boxes.vertices.rowwise() + Eigen::RowVector3d(1, 1, 1);
+    Eigen::MatrixXi simplices(2 * boxes.num_simplices(), 4);
+    simplices << boxes.simplices, boxes.simplices.array() + int(n);
+    // The copy's corner at (1, 1, 1) is the cube's vertex at (1, 1, 1).
+    Index far = -1, near = -1;
+    for (Index v = 0; v < n; ++v) {
+        if (boxes.vertices.row(v) == Eigen::RowVector3d(1, 1, 1)) far = v;
+        if (boxes.vertices.row(v) == Eigen::RowVector3d(0, 0, 0)) near = v;
+    }
+    ASSERT_GE(far, 0);
+    ASSERT_GE(near, 0);
+    simplices = simplices.unaryExpr([&](int v) { return v == int(n + near) ? int(far) : v; });
+    boxes.vertices = vertices;
+    boxes.simplices = simplices;
+    EXPECT_EQ(pinched_vertices(boxes, mesh_topology(boxes, "boxes")), (std::vector<Index>{far}));
+
+    const SimplicialMesh grid = grid_triangles(3, 3);
+    EXPECT_TRUE(pinched_vertices(grid, mesh_topology(grid, "grid")).empty());
+    const SimplicialMesh sphere = sphere_triangles(2);
+    EXPECT_TRUE(pinched_vertices(sphere, mesh_topology(sphere, "sphere")).empty());
+    const SimplicialMesh cube = grid_tetrahedra(2, 2, 2);
+    EXPECT_TRUE(pinched_vertices(cube, mesh_topology(cube, "cube")).empty());
+}
+
 TEST(SimplicialMesh, ValidationNamesTheProblem) {
     SimplicialMesh mesh = grid_triangles(2, 2);
     EXPECT_NO_THROW(validate_mesh(mesh, "grid"));
