@@ -140,7 +140,7 @@ void write_polycube_outputs(const PolycubePlan& plan, const PreparedPolycube& pr
     write(plan.flags,
           [&](const std::string& path) { write_facet_flags(path, prepared.output_flags()); });
     write(plan.out,
-          [&](const std::string& path) { write_medit(path, positions, prepared.mesh.simplices); });
+          [&](const std::string& path) { write_polycube_map(path, prepared, positions); });
     write(plan.vtu, [&](const std::string& path) {
         write_polycube_vtu(path, prepared, positions, verification);
     });

@@ -42,13 +42,19 @@ std::string polycube_flags_path(const std::string& out) {
     return without_mesh_extension(out) + ".flags";
 }
 
+void write_polycube_map(const std::string& out, const PreparedPolycube& prepared,
+                        const Eigen::MatrixXd& positions) {
+    check_positions(prepared, positions, "write_polycube_map");
+    write_medit(out, prepared.in_input_units(positions), prepared.mesh.simplices);
+}
+
 void write_polycube_meshes(const std::string& out, const PreparedPolycube& prepared,
                            const Eigen::MatrixXd& positions) {
     check_positions(prepared, positions, "write_polycube_meshes");
     const std::string rest = polycube_rest_path(out), flags = polycube_flags_path(out);
     write_medit(rest, prepared.rest_positions(), prepared.mesh.simplices);
     write_facet_flags(flags, prepared.output_flags());
-    write_medit(out, positions, prepared.mesh.simplices);
+    write_polycube_map(out, prepared, positions);
 }
 
 void write_polycube_vtu(const std::string& path, const PreparedPolycube& prepared,
@@ -63,10 +69,11 @@ void write_polycube_vtu(const std::string& path, const PreparedPolycube& prepare
     }
     cells.push_back(std::move(labels));
     DataArray rest{"rest", prepared.rest_positions(), false};
+    const Eigen::MatrixXd mapped = prepared.in_input_units(positions);
     if (path.size() >= 4 && path.substr(path.size() - 4) == ".vtk") {
-        write_vtk(path, positions, prepared.mesh.simplices, {rest}, cells);
+        write_vtk(path, mapped, prepared.mesh.simplices, {rest}, cells);
     } else {
-        write_vtu(path, positions, prepared.mesh.simplices, {rest}, cells);
+        write_vtu(path, mapped, prepared.mesh.simplices, {rest}, cells);
     }
 }
 

@@ -26,12 +26,17 @@ std::string polycube_rest_path(const std::string& out);
 /// OUT.flags for OUT.mesh.
 std::string polycube_flags_path(const std::string& out);
 
+/// Writes OUT.mesh alone: `positions` (#V x 3, a map of prepared.mesh, in its units) in the
+/// input's units (PreparedPolycube::in_input_units).
+void write_polycube_map(const std::string& out, const PreparedPolycube& prepared,
+                        const Eigen::MatrixXd& positions);
+
 /// Writes OUT.mesh, OUT.rest.mesh and OUT.flags. `positions` #V x 3 of prepared.mesh.
 void write_polycube_meshes(const std::string& out, const PreparedPolycube& prepared,
                            const Eigen::MatrixXd& positions);
 
-/// Writes the .vtu (or .vtk) described above; `verification` from verify_polycube() on the same
-/// positions.
+/// Writes the .vtu (or .vtk) described above, in the input's units; `verification` from
+/// verify_polycube() on the same positions.
 void write_polycube_vtu(const std::string& path, const PreparedPolycube& prepared,
                         const Eigen::MatrixXd& positions, const PolycubeVerification& verification);
 

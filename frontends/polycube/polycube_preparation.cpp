@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <sstream>
@@ -40,7 +41,9 @@ std::vector<int> read_file_labels(const SimplicialMesh& mesh, const TetBoundary&
                 "per-triangle labels need both the labels and the surface they refer to");
         }
         p.label_source = input.labels;
-        const SimplicialMesh surface = read_mesh_file(input.surface).mesh;
+        // In the mesh's units (PreparedPolycube::scale_exponent), as its positions are.
+        SimplicialMesh surface = read_mesh_file(input.surface).mesh;
+        surface.vertices *= std::ldexp(1.0, -p.scale_exponent);
         const std::vector<int> surface_labels =
             read_triangle_labels(input.labels, surface.num_simplices());
         const std::vector<int> file_labels =
@@ -230,25 +233,34 @@ void require_no_flat_tets(const PreparedPolycube& p, Index input_vertices,
 }  // namespace
 
 Eigen::MatrixXd PreparedPolycube::rest_positions() const {
-    if (!orientation) return mesh.vertices;
     // Rows are turned as x R^T; the input's own vertices are copied, not turned back.
-    Eigen::MatrixXd x = mesh.vertices * orientation->rotation;
+    Eigen::MatrixXd x = in_input_units(orientation ? mesh.vertices * orientation->rotation
+                                                   : mesh.vertices);
     x.topRows(input.num_vertices()) = input.vertices;
     return x;
+}
+
+Eigen::MatrixXd PreparedPolycube::in_input_units(const Eigen::MatrixXd& positions) const {
+    return positions * std::ldexp(1.0, scale_exponent);
 }
 
 std::vector<int> PreparedPolycube::output_flags() const {
     return facet_flags(boundary, mesh.num_simplices(), labels, output_sign);
 }
 
-PreparedPolycube prepare_polycube(const SimplicialMesh& mesh, const std::string& source,
+PreparedPolycube prepare_polycube(const SimplicialMesh& given, const std::string& source,
                                   const PolycubeLabelInput& input, const Logger& logger) {
-    if (mesh.simplex_dimension() != 3 || mesh.ambient_dimension() != 3) {
+    if (given.simplex_dimension() != 3 || given.ambient_dimension() != 3) {
         throw InputError(source + ": a PolyCube map needs a tetrahedral mesh");
     }
-    validate_mesh(mesh, source);
+    validate_mesh(given, source);
     PreparedPolycube p;
-    p.input = mesh;
+    p.input = given;
+    // Everything from here on at unit scale: a mesh at 1e100 or 1e-100 is prepared and solved as
+    // at 1 (its areas and volumes would overflow or underflow), with the same bits.
+    p.scale_exponent = scale_exponent(given.vertices);
+    SimplicialMesh mesh = given;
+    mesh.vertices *= std::ldexp(1.0, -p.scale_exponent);
     Stopwatch stage;
     const MeshTopology topology = mesh_topology(mesh, source);
     const TetBoundary boundary = tet_boundary(mesh, topology);

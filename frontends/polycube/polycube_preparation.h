@@ -56,8 +56,12 @@ struct PreparedPolycube {
     std::optional<PolycubeOrientation> orientation;
     /// The rest mesh of the map: the input after the splits (its vertices and tetrahedra first,
     /// in their order; a split tetrahedron's first child keeps its index), turned by
-    /// `orientation`. The map's energies do not see the turn.
+    /// `orientation` and at unit scale (times 2^-scale_exponent). The map's energies see neither;
+    /// maps of `mesh` are in its units (in_input_units() for what is written).
     SimplicialMesh mesh;
+    /// scale_exponent(input.vertices) (simplicial_mesh.h): `mesh` is the input times 2^-k, so
+    /// that a mesh at 1e100 or 1e-100 is prepared and solved as at 1, with the same bits.
+    int scale_exponent = 0;
     std::vector<int> facet_labels;  ///< per tet facet of `mesh`: -1 or 0..5 (+X, -X, ..., -Z)
     MeshTopology topology;
     TetBoundary boundary;
@@ -65,7 +69,7 @@ struct PreparedPolycube {
     PolycubeCharts charts;
     std::vector<BoundaryEdgeFan> fans;
     std::vector<BoundaryVertexStar> stars;
-    double input_volume = 0.0;
+    double input_volume = 0.0;  ///< of `mesh`, in its units
 
     std::string label_source;  ///< "computed" or the file the labels came from
     /// File labels: how their parity related to the geometry.
@@ -84,9 +88,12 @@ struct PreparedPolycube {
 
     /// Pointers into this object, for verify_polycube().
     PolycubeLayout layout() const { return {&mesh, &boundary, &charts, &fans, &stars}; }
-    /// `mesh`'s vertices in the input's frame (#V x 3): the input's own, then the splits' new
-    /// vertices turned back. What OUT.rest.mesh holds.
+    /// `mesh`'s vertices in the input's frame and units (#V x 3): the input's own, then the
+    /// splits' new vertices turned and scaled back. What OUT.rest.mesh holds.
     Eigen::MatrixXd rest_positions() const;
+    /// A map of `mesh` (#V x 3) in the input's units (times 2^scale_exponent, exactly): what
+    /// OUT.mesh holds.
+    Eigen::MatrixXd in_input_units(const Eigen::MatrixXd& positions) const;
     /// The .flags array of `mesh` in output_sign's convention.
     std::vector<int> output_flags() const;
 };

@@ -34,7 +34,7 @@ nlohmann::json polycube_preparation_json(const PreparedPolycube& p) {
     nlohmann::json j;
     j["input"] = {{"vertices", p.input.num_vertices()},
                   {"tets", p.input.num_simplices()},
-                  {"volume", p.input_volume}};
+                  {"volume", std::ldexp(p.input_volume, 3 * p.scale_exponent)}};
     nlohmann::json labels = {{"source", p.label_source},
                              {"boundary_triangles", p.boundary.size()},
                              {"charts", p.charts.size()},

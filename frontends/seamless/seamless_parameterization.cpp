@@ -80,11 +80,10 @@ bool same_singularities(const std::vector<Singularity>& a, const std::vector<Sin
     return true;
 }
 
-}  // namespace
-
-SeamlessResult seamless_parameterization(const SimplicialMesh& input,
-                                         const std::optional<FrameFieldInput>& field,
-                                         const SeamlessOptions& options, const Logger& logger) {
+/// The pipeline on `input` as given; seamless_parameterization() calls it at unit scale.
+SeamlessResult seamless_in_mesh_units(const SimplicialMesh& input,
+                                      const std::optional<FrameFieldInput>& field,
+                                      const SeamlessOptions& options, const Logger& logger) {
     Stopwatch total, stage;
     // options.integrable.max_time_seconds holds for the whole run: the assembly and the repairs
     // take what is left.
@@ -202,6 +201,28 @@ SeamlessResult seamless_parameterization(const SimplicialMesh& input,
         left.integrable.max_time_seconds = budget.remaining();
         return repair_folded_field(r, left, logger);
     }
+    return r;
+}
+
+}  // namespace
+
+SeamlessResult seamless_parameterization(const SimplicialMesh& input,
+                                         const std::optional<FrameFieldInput>& field,
+                                         const SeamlessOptions& options, const Logger& logger) {
+    // At unit scale (simplicial_mesh.h, scale_exponent): a surface at 1e100 or 1e-100 is solved
+    // as at 1, with the same bits; (u, v) are in units of H, so only lengths are scaled back.
+    const int k = scale_exponent(input.vertices);
+    if (k == 0) return seamless_in_mesh_units(input, field, options, logger);
+    SimplicialMesh unit = input;
+    unit.vertices *= std::ldexp(1.0, -k);
+    SeamlessOptions in_unit = options;
+    in_unit.scale = std::ldexp(options.scale, -k);
+    SeamlessResult r = seamless_in_mesh_units(unit, field, in_unit, logger);
+    const double back = std::ldexp(1.0, k);
+    r.surface.vertices *= back;
+    r.plain.map.cut.mesh.vertices *= back;
+    r.result.map.cut.mesh.vertices *= back;
+    r.scale *= back;
     return r;
 }
 

@@ -930,6 +930,30 @@ std::vector<Case> catalogue() {
          {"success: verified"},
          {"uv.obj", "uv.png"}},
     };
+    // The same scales to `sa seamless` and `sa polycube`: solved as at unit scale.
+    for (const auto& [name, scale] :
+         std::vector<std::pair<std::string, double>>{{"1e100", 1e100}, {"1eMinus100", 1e-100}}) {
+        cases.push_back({"SeamlessSphereAt" + name,
+                         [scale = scale](const Inputs& in) {
+                             SimplicialMesh sphere = sphere_triangles(3);
+                             sphere.vertices *= scale;
+                             in.mesh("s.off", sphere);
+                         },
+                         "seamless --mesh {D}/s.off --out {D}/uv.obj --quiet --no-png",
+                         0,
+                         {"success: verified"},
+                         {"uv.obj", "uv.vtu"}});
+        cases.push_back({"PolycubeBoxAt" + name,
+                         [scale = scale](const Inputs& in) {
+                             SimplicialMesh box = grid_tetrahedra(2, 2, 2);
+                             box.vertices *= scale;
+                             in.mesh("b.mesh", box);
+                         },
+                         "polycube --mesh {D}/b.mesh --out {D}/p.mesh --quiet --no-png",
+                         0,
+                         {"success: PolyCube verified"},
+                         {"p.mesh", "p.rest.mesh", "p.flags"}});
+    }
     // A corner moved far from a 3 x 3 grid whose boundary is fixed: the initial map is
     // inversion-free, so the problem is solvable. (Beyond about 1e14 the verification calls the
     // unit triangles degenerate: its test is relative to the largest simplex of the map.)

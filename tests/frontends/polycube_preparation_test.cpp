@@ -5,6 +5,7 @@
 #include <unistd.h>
 #include <Eigen/Geometry>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -62,7 +63,10 @@ TEST_F(PolycubePreparation, ComputedLabels) {
     EXPECT_EQ(p.mesh.simplices, mesh.simplices);
     EXPECT_EQ(p.fans.size(), p.boundary.edges.size());
     EXPECT_GT(p.stars.size(), 0u);
-    EXPECT_NEAR(p.input_volume, tet_mesh_volume(mesh, mesh.vertices), 1e-15);
+    // `mesh` at unit scale: the input times 2^-scale_exponent, its bounding-box diagonal in [1, 2).
+    EXPECT_EQ(p.scale_exponent, scale_exponent(mesh.vertices));
+    EXPECT_NEAR(std::ldexp(p.input_volume, 3 * p.scale_exponent),
+                tet_mesh_volume(mesh, mesh.vertices), 1e-15);
     // The bent L turned a little faces the axes better; either labelling has 8 charts. The
     // bend moves its corners' angles off 90 degrees: a distortion floor a little above 1.
     ASSERT_EQ(lines.size(), 4u);
@@ -97,7 +101,8 @@ TEST_F(PolycubePreparation, ComputedLabelsAreTakenInTheOrientationThatFacesTheAx
     // The input's vertices come first, then those of any splits.
     const Index n = mesh.num_vertices();
     ASSERT_GE(p.mesh.num_vertices(), n);
-    EXPECT_LT((p.mesh.vertices.topRows(n) - mesh.vertices * p.orientation->rotation.transpose())
+    EXPECT_LT((p.in_input_units(p.mesh.vertices.topRows(n)) -
+               mesh.vertices * p.orientation->rotation.transpose())
                   .cwiseAbs()
                   .maxCoeff(),
               1e-15);
@@ -109,7 +114,7 @@ TEST_F(PolycubePreparation, ComputedLabelsAreTakenInTheOrientationThatFacesTheAx
     const PreparedPolycube kept = prepare_polycube(mesh, "L", own_axes);
     EXPECT_FALSE(kept.orientation.has_value() && kept.orientation->angle_degrees > 0.0);
     ASSERT_GE(kept.mesh.num_vertices(), n);
-    EXPECT_EQ(kept.mesh.vertices.topRows(n), mesh.vertices);
+    EXPECT_EQ(kept.in_input_units(kept.mesh.vertices.topRows(n)), mesh.vertices);
 }
 
 TEST_F(PolycubePreparation, FlagsInTheirOwnConventionAreWrittenBackInIt) {
@@ -220,6 +225,33 @@ TEST_F(PolycubePreparation, ANonConformingMeshIsNamedAsSuch) {
                                      PolycubeLabelInput{}));
 }
 
+// A solid at 1e100 or 1e-100 is prepared as at 1 (its areas and volumes would overflow or
+// underflow): the same labels and charts, the same rest mesh of the map up to the power of two,
+// and its outputs in its own units.
+TEST_F(PolycubePreparation, ExtremeScalesArePreparedAsAtUnitScale) {
+    const SimplicialMesh mesh =
+        testing::bent(testing::voxel_tetrahedra(testing::l_shape(), 2), 0.02);
+    const PreparedPolycube unit = prepare_polycube(mesh, "L", {});
+    for (const double scale : {1e100, 1e-100}) {
+        SCOPED_TRACE(scale);
+        SimplicialMesh scaled = mesh;
+        scaled.vertices *= scale;
+        const PreparedPolycube p = prepare_polycube(scaled, "L", {});
+        EXPECT_EQ(p.labels, unit.labels);
+        EXPECT_EQ(p.charts.size(), unit.charts.size());
+        EXPECT_EQ(p.mesh.simplices, unit.mesh.simplices);
+        // Both at unit scale, apart by what is left of `scale` after the powers of two.
+        const double left = std::ldexp(scale, unit.scale_exponent - p.scale_exponent);
+        EXPECT_GT(left, 0.5);
+        EXPECT_LT(left, 2.0);
+        EXPECT_TRUE(p.mesh.vertices.isApprox(left * unit.mesh.vertices, 1e-14));
+        EXPECT_NEAR(p.angle_bound.bound, unit.angle_bound.bound, 1e-12);
+        EXPECT_EQ(p.rest_positions().topRows(mesh.num_vertices()), scaled.vertices);
+        EXPECT_TRUE(p.in_input_units(p.mesh.vertices).isApprox(
+            scale * unit.in_input_units(unit.mesh.vertices), 1e-14));
+    }
+}
+
 TEST_F(PolycubePreparation, OutputsReadBack) {
     const SimplicialMesh mesh = testing::voxel_tetrahedra(testing::l_shape(), 2);
     const PreparedPolycube p = prepare_polycube(mesh, "L", {});
@@ -234,8 +266,8 @@ TEST_F(PolycubePreparation, OutputsReadBack) {
     const MeshFile map = read_medit(out), rest = read_medit(path("L.rest.mesh"));
     EXPECT_EQ(map.mesh.simplices, p.mesh.simplices);
     EXPECT_EQ(rest.mesh.simplices, p.mesh.simplices);
-    EXPECT_TRUE(map.mesh.vertices.isApprox(mapped, 1e-15));
-    EXPECT_TRUE(rest.mesh.vertices.isApprox(p.mesh.vertices, 1e-15));
+    EXPECT_TRUE(map.mesh.vertices.isApprox(p.in_input_units(mapped), 1e-15));
+    EXPECT_TRUE(rest.mesh.vertices.isApprox(mesh.vertices, 1e-15));
     EXPECT_EQ(read_facet_flags(path("L.flags"), p.mesh.num_simplices()), p.output_flags());
     write_polycube_vtu(path("L.vtu"), p, mapped, v);
     const MeshFile vtu = read_vtu(path("L.vtu"));
