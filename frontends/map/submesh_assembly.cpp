@@ -294,12 +294,16 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
                                       r.message.substr(0, 120).c_str());
                         log_line(observer.logger, line);
                     }
-                    if (ok) {
-                    } else if (region.rings + 2 <= options.max_rings) {
-                        retry.push_back(
-                            {fill_enclosed(p.topology,
-                                           grow_rings(input.mesh, p.topology, region.simplices, 2)),
-                             region.rings + 2});
+                    if (ok) continue;
+                    // Two more rings, unless they add nothing (the region is its whole component):
+                    // the same region from the same start would fail the same way.
+                    std::vector<Index> grown =
+                        region.rings + 2 <= options.max_rings
+                            ? fill_enclosed(p.topology,
+                                            grow_rings(input.mesh, p.topology, region.simplices, 2))
+                            : std::vector<Index>{};
+                    if (grown.size() > region.simplices.size()) {
+                        retry.push_back({std::move(grown), region.rings + 2});
                     } else {
                         ++record.failed;
                     }
@@ -320,6 +324,8 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
                       long(record.solved), long(record.failed), long(record.remaining));
         log_line(observer.logger, line);
         stats.rounds.push_back(record);
+        // Nothing repaired, nothing moved: another round would solve the same regions again.
+        if (record.solved == 0) break;
     }
     result.assembled = bad.empty();
     // The repaired mesh is valid: finish with the vertex stage on the vertices the start and the
