@@ -105,7 +105,13 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
     if (run_callbacks()) return summary;
 
     // The Hessian's pattern and its symbolic factorization only now: a callback that takes the
-    // start (a hand-over at iteration 0) needs neither.
+    // start (a hand-over at iteration 0) needs neither, nor a solve whose time is up already
+    // (on a large system they cost as much as an iteration).
+    if (total.seconds() > opt.max_time_seconds) {
+        return finish(TerminationType::kMaxTime,
+                      format("reached max_time_seconds = ", opt.max_time_seconds) +
+                          " before the Hessian's setup");
+    }
     Stopwatch watch;
     if (!assembler_ || !assembler_->matches(problem)) {
         assembler_.reset();

@@ -252,9 +252,10 @@ TEST(NewtonSolver, IterationLimitIsReported) {
     EXPECT_FALSE(summary.success());
 }
 
-// The limit is checked before the first iteration too: a solve whose setup (pattern, analysis)
-// used the time stops there instead of running one more, possibly long, iteration.
-TEST(NewtonSolver, TimeLimitPassedDuringTheSetupStopsBeforeTheFirstIteration) {
+// The limit is checked before the Hessian's setup (its pattern and symbolic analysis, as long as
+// an iteration on a large system) and before the first iteration: a solve whose time is up stops
+// there instead of running one more, possibly long, step.
+TEST(NewtonSolver, TimeLimitPassedBeforeTheSetupSkipsIt) {
     Problem problem(Eigen::Vector2d(-1.2, 1.0));
     problem.add_term("rosenbrock", RosenbrockLink{}, {{0, 1}});
     NewtonOptions options;
@@ -263,8 +264,10 @@ TEST(NewtonSolver, TimeLimitPassedDuringTheSetupStopsBeforeTheFirstIteration) {
     EXPECT_EQ(summary.termination, TerminationType::kMaxTime);
     EXPECT_EQ(summary.num_steps(), 0);
     EXPECT_EQ(problem.variables(), Eigen::Vector2d(-1.2, 1.0));
-    EXPECT_NE(summary.message.find("before the first iteration"), std::string::npos)
+    EXPECT_NE(summary.message.find("before the Hessian's setup"), std::string::npos)
         << summary.message;
+    EXPECT_EQ(summary.times.setup, 0.0);
+    EXPECT_EQ(summary.times.analyze, 0.0);
 }
 
 TEST(NewtonSolver, ReportsNameTheOutcome) {
