@@ -176,50 +176,64 @@ std::vector<Index> MeshTopology::simplex_components(Index* count) const {
 namespace {
 
 /// The number of pieces the simplices around `v` form through the facets that contain `v`.
-int star_pieces(const SimplicialMesh& mesh, const MeshTopology& topology, Index v) {
+/// `reached` (one flag per simplex, all 0) is left all 0 again.
+int star_pieces(const SimplicialMesh& mesh, const MeshTopology& topology, Index v,
+                std::vector<unsigned char>& reached) {
     const Index begin = topology.vertex_begin[v], end = topology.vertex_begin[v + 1];
-    std::vector<Index> reached;  // the star's simplices, piece by piece
+    std::vector<Index> stack;
     int pieces = 0;
     for (Index i = begin; i < end; ++i) {
         const Index seed = topology.simplices_of_vertex[i];
-        if (std::find(reached.begin(), reached.end(), seed) != reached.end()) continue;
+        if (reached[seed]) continue;
         ++pieces;
-        std::size_t next = reached.size();
-        reached.push_back(seed);
-        for (; next < reached.size(); ++next) {
-            const Index s = reached[next];
+        reached[seed] = 1;
+        stack.push_back(seed);
+        while (!stack.empty()) {
+            const Index s = stack.back();
+            stack.pop_back();
             for (int k = 0; k <= topology.dimension; ++k) {
                 if (mesh.simplices(s, k) == v) continue;  // the facet opposite v: not through v
                 const Index t = topology.neighbour_of(s, k);
-                if (t >= 0 && std::find(reached.begin(), reached.end(), t) == reached.end())
-                    reached.push_back(t);
+                if (t >= 0 && !reached[t]) {
+                    reached[t] = 1;
+                    stack.push_back(t);
+                }
             }
         }
     }
+    for (Index i = begin; i < end; ++i) reached[topology.simplices_of_vertex[i]] = 0;
     return pieces;
 }
 
 }  // namespace
 
-std::vector<Index> pinched_vertices(const SimplicialMesh& mesh, const MeshTopology& topology) {
+std::vector<Index> pinched_vertices(const SimplicialMesh& mesh, const MeshTopology& topology,
+                                    int* first_pieces) {
     std::vector<Index> pinched;
+    std::vector<unsigned char> reached(mesh.num_simplices(), 0);
     for (Index v = 0; v + 1 < Index(topology.vertex_begin.size()); ++v) {
         if (topology.vertex_begin[v + 1] - topology.vertex_begin[v] < 2) continue;
-        if (star_pieces(mesh, topology, v) > 1) pinched.push_back(v);
+        const int pieces = star_pieces(mesh, topology, v, reached);
+        if (pieces < 2) continue;
+        if (pinched.empty() && first_pieces != nullptr) *first_pieces = pieces;
+        pinched.push_back(v);
     }
     return pinched;
 }
 
 void require_no_pinched_vertex(const SimplicialMesh& mesh, const MeshTopology& topology,
                                const std::string& source, const std::string& needs) {
-    const std::vector<Index> pinched = pinched_vertices(mesh, topology);
+    int pieces = 0;
+    const std::vector<Index> pinched = pinched_vertices(mesh, topology, &pieces);
     if (pinched.empty()) return;
     const bool triangles = topology.dimension == 2;
+    const std::string others =
+        pinched.size() == 1 ? "the only one"
+                            : std::to_string(pinched.size() - 1) + " more such vertices";
     throw InputError(source + ": pinched at vertex " + std::to_string(pinched.front()) + ": its " +
-                     (triangles ? "triangles" : "tetrahedra") + " form " +
-                     std::to_string(star_pieces(mesh, topology, pinched.front())) +
+                     (triangles ? "triangles" : "tetrahedra") + " form " + std::to_string(pieces) +
                      " pieces that share no " + (triangles ? "edge" : "face") + " through it (" +
-                     std::to_string(pinched.size()) + " such vertices); " + needs);
+                     others + "); " + needs);
 }
 
 }  // namespace sa

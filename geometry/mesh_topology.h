@@ -49,10 +49,13 @@ struct MeshTopology {
 /// The vertices where the mesh is pinched: their simplices do not form one piece through the
 /// facets that contain the vertex (a bowtie's middle vertex, two solids touching at a vertex),
 /// in increasing order. Such a vertex has no single disk (ball) of simplices around it.
-std::vector<Index> pinched_vertices(const SimplicialMesh& mesh, const MeshTopology& topology);
+/// `first_pieces`, when given, receives the number of pieces at the first one.
+std::vector<Index> pinched_vertices(const SimplicialMesh& mesh, const MeshTopology& topology,
+                                    int* first_pieces = nullptr);
 
 /// Throws InputError "SOURCE: pinched at vertex V: its triangles (tetrahedra) form N pieces that
-/// share no edge (face) through it (K such vertices); NEEDS" when pinched_vertices() finds one.
+/// share no edge (face) through it (the only one | K more such vertices); NEEDS" when
+/// pinched_vertices() finds one.
 void require_no_pinched_vertex(const SimplicialMesh& mesh, const MeshTopology& topology,
                                const std::string& source, const std::string& needs);
 

@@ -45,7 +45,8 @@ struct RegularizationOptions {
 struct NewtonOptions {
     /// Newton steps before stopping with kMaxIterations.
     int max_iterations = 200;
-    /// Wall-clock limit in seconds, checked before every iteration and factorization retry.
+    /// Wall-clock limit in seconds, checked before the Hessian's setup (its pattern and symbolic
+    /// analysis), every iteration and every factorization retry.
     double max_time_seconds = std::numeric_limits<double>::infinity();
 
     /// Converged when the largest |gradient entry| over the free variables is <= this. 0 = off.

@@ -104,14 +104,15 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
     }
     if (run_callbacks()) return summary;
 
+    auto out_of_time = [&] { return total.seconds() > opt.max_time_seconds; };
+    auto stop_for_time = [&](const char* where) {
+        return finish(TerminationType::kMaxTime,
+                      format("reached max_time_seconds = ", opt.max_time_seconds) + where);
+    };
     // The Hessian's pattern and its symbolic factorization only now: a callback that takes the
     // start (a hand-over at iteration 0) needs neither, nor a solve whose time is up already
     // (on a large system they cost as much as an iteration).
-    if (total.seconds() > opt.max_time_seconds) {
-        return finish(TerminationType::kMaxTime,
-                      format("reached max_time_seconds = ", opt.max_time_seconds) +
-                          " before the Hessian's setup");
-    }
+    if (out_of_time()) return stop_for_time(" before the Hessian's setup");
     Stopwatch watch;
     if (!assembler_ || !assembler_->matches(problem)) {
         assembler_.reset();
@@ -139,11 +140,6 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
     Eigen::VectorXd trial(n);
     std::vector<double> trial_term_values;
 
-    auto out_of_time = [&] { return total.seconds() > opt.max_time_seconds; };
-    auto stop_for_time = [&](const char* where) {
-        return finish(TerminationType::kMaxTime,
-                      format("reached max_time_seconds = ", opt.max_time_seconds) + where);
-    };
     for (int k = 1;; ++k) {
         // Also before the first iteration: the setup and analysis above may have used the time
         // already, and one iteration of a large system costs as much again.

@@ -34,8 +34,8 @@ struct NewtonSummary {
     double final_gradient_norm = -1.0;  ///< at the last point where it was evaluated
 
     Index num_variables = 0;
-    /// Not fixed and used by a term. This and hessian_nonzeros stay 0 when a callback ends the
-    /// solve at iteration 0, before the Hessian's pattern is made.
+    /// Not fixed and used by a term. This and hessian_nonzeros stay 0 when the solve ends at
+    /// iteration 0 before the Hessian's pattern is made (a callback, or the time limit).
     Index num_free_variables = 0;
     std::int64_t hessian_nonzeros = 0;  ///< in the lower triangle
     LinearSolverType linear_solver = LinearSolverType::kCholmodSupernodal;  ///< the one used

@@ -92,12 +92,17 @@ void install_interruption_handling() {
     action.sa_handler = on_signal;
     sigemptyset(&action.sa_mask);
     action.sa_flags = SA_RESTART;
+    sigset_t blocked;
+    sigemptyset(&blocked);
+    pthread_sigmask(SIG_BLOCK, nullptr, &blocked);
     for (const int signal : kSignals) {
         struct sigaction previous {};
         sigaction(signal, nullptr, &previous);
         // A signal the parent ignores (nohup, a shell's background job) stays ignored.
         if (previous.sa_handler == SIG_IGN) continue;
-        if (sigaction(signal, &action, nullptr) == 0 && signal == SIGPIPE)
+        // A blocked SIGPIPE is never delivered: a failed write to stdout is then an error.
+        if (sigaction(signal, &action, nullptr) == 0 && signal == SIGPIPE &&
+            sigismember(&blocked, SIGPIPE) != 1)
             handles_sigpipe.store(true);
     }
 }

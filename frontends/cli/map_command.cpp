@@ -109,6 +109,12 @@ int run_map_command(const MapArguments& a) {
     std::string handles_reading;
     if (a.handles.empty()) {
         problem.handles = rest.handles;
+        for (Index h : problem.handles) {
+            if (h < 0 || h >= nv) {
+                throw InputError(a.rest + ": handle vertex " + std::to_string(h) +
+                                 " outside [0, " + std::to_string(nv) + ")");
+            }
+        }
     } else {
         IndexList list = read_index_list(a.handles);
         for (std::size_t k = 0; k < list.indices.size(); ++k) {
@@ -119,12 +125,6 @@ int run_map_command(const MapArguments& a) {
         }
         handles_reading = first_number_reading(a.handles, list);
         problem.handles = std::move(list.indices);
-    }
-    for (Index h : problem.handles) {
-        if (h < 0 || h >= nv) {
-            throw InputError(a.rest + ": handle vertex " + std::to_string(h) + " outside [0, " +
-                             std::to_string(nv) + ")");
-        }
     }
     Eigen::MatrixXd targets;
     if (!a.targets.empty()) {

@@ -1,11 +1,14 @@
 #include "frontends/deform/handle_targets.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <exception>
 #include <optional>
 #include <set>
+#include <string_view>
 #include <unordered_map>
+#include <utility>
 
 #include "geometry/io/index_list_io.h"
 #include "geometry/io/indexed_positions_io.h"
@@ -64,6 +67,21 @@ std::vector<std::string> row_origins(const std::string& path, const std::vector<
     origins.reserve(lines.size());
     for (const int line : lines) origins.push_back(path + ":" + std::to_string(line));
     return origins;
+}
+
+/// Whether the first number of every row of `path` (a count line aside) is an integer.
+bool integer_first_column(const std::string& path) {
+    io::TextReader reader(path);
+    bool first_line = true;
+    while (reader.next_line()) {
+        const auto& tokens = reader.tokens();
+        if (std::exchange(first_line, false) && tokens.size() == 1) continue;  // a count
+        long long value = 0;
+        const std::string_view token = tokens.front();
+        const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+        if (error != std::errc() || end != token.data() + token.size()) return false;
+    }
+    return true;
 }
 
 struct Targets {
@@ -246,11 +264,10 @@ HandleTargets read_handle_targets(const std::string& handles_path, const std::st
         result.reading = "rows `x y 0` of " + targets_path + ", one per " + per + handles_note;
         return result;
     }
-    // Neither fits: the reading the first row's count of numbers names, unless its indices are
-    // no integers at all.
-    std::rethrow_exception(by_count && indexed_error ? indexed_error
-                           : plain_error             ? plain_error
-                                                     : indexed_error);
+    // Neither fits: why the `index x y` reading failed, unless the first numbers are not all
+    // integers (then the rows were meant as positions).
+    std::rethrow_exception(plain_error && !integer_first_column(targets_path) ? plain_error
+                                                                                : indexed_error);
 }
 
 void check_target_reach(const Eigen::MatrixXd& rest, const HandleTargets& handle_targets) {

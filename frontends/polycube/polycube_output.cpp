@@ -50,7 +50,7 @@ void write_polycube_map(const std::string& out, const PreparedPolycube& prepared
 
 void write_polycube_meshes(const std::string& out, const PreparedPolycube& prepared,
                            const Eigen::MatrixXd& positions) {
-    check_positions(prepared, positions, "write_polycube_meshes");
+    check_positions(prepared, positions, "write_polycube_meshes");  // before any file is written
     const std::string rest = polycube_rest_path(out), flags = polycube_flags_path(out);
     write_medit(rest, prepared.rest_positions(), prepared.mesh.simplices);
     write_facet_flags(flags, prepared.output_flags());

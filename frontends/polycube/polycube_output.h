@@ -31,7 +31,8 @@ std::string polycube_flags_path(const std::string& out);
 void write_polycube_map(const std::string& out, const PreparedPolycube& prepared,
                         const Eigen::MatrixXd& positions);
 
-/// Writes OUT.mesh, OUT.rest.mesh and OUT.flags. `positions` #V x 3 of prepared.mesh.
+/// Writes OUT.mesh, OUT.rest.mesh and OUT.flags, in the input's units. `positions` #V x 3, a map
+/// of prepared.mesh in its units.
 void write_polycube_meshes(const std::string& out, const PreparedPolycube& prepared,
                            const Eigen::MatrixXd& positions);
 

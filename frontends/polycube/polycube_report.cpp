@@ -60,12 +60,13 @@ nlohmann::json polycube_preparation_json(const PreparedPolycube& p) {
                                  {"l1_alignment_as_given", p.orientation->energy_identity}};
     }
     nlohmann::json turning = nlohmann::json::array();
+    const double unit = std::ldexp(1.0, p.scale_exponent);  // lengths in the input's units
     for (const NonMonotoneBoundary& b : p.non_monotone) {
         turning.push_back({{"labels", {label_name(b.label_a), label_name(b.label_b)}},
                            {"edges", b.edges},
                            {"strongly_backward_edges", b.strongly_backward},
-                           {"length", b.length},
-                           {"backward_travel", b.backward_travel},
+                           {"length", unit * b.length},
+                           {"backward_travel", unit * b.backward_travel},
                            {"vertex", b.vertex}});
     }
     labels["non_monotone_boundaries"] = turning;

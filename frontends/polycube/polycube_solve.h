@@ -32,7 +32,9 @@
 //   4. verify_polycube() on the output positions: the run succeeds only when it passes (and the
 //      driver's own verification: no inverted or degenerate tetrahedron, no branched edge).
 //
-// Units: positions in the input's units; distortion reported after scaling to the input volume.
+// Units: positions (the start's and the result's) in prepared.mesh's, the input's times
+// 2^-scale_exponent (PreparedPolycube::in_input_units() for the input's); distortion reported
+// after scaling to the input volume.
 
 #include <memory>
 #include <string>

@@ -31,6 +31,14 @@ CurlStats curl_stats(const Eigen::VectorXd& curl) {
     return {curl.maxCoeff(), curl.mean()};
 }
 
+/// The (u, v) map's quality per face, measured on its cut mesh in space with (u, v) times
+/// `uv_scale`.
+MapQuality measured_quality(const SeamlessMap& map, double uv_scale = 1.0) {
+    const RestFrames<2> frames = rest_frames<2>(map.cut.mesh);
+    return map_quality<2>(linear_parts<2>(map.cut.mesh, frames, uv_scale * map.uv),
+                          frames.volume);
+}
+
 VerifiedSeamlessMap poisson_verified(const SimplicialMesh& mesh, const MeshTopology& topology,
                                      const SeamlessResult& r, const std::vector<Mat<2>>& field,
                                      double to_jacobian) {
@@ -38,9 +46,7 @@ VerifiedSeamlessMap poisson_verified(const SimplicialMesh& mesh, const MeshTopol
     for (std::size_t f = 0; f < field.size(); ++f) jacobians[f] = to_jacobian * field[f];
     VerifiedSeamlessMap out;
     out.map = seamless_poisson(mesh, topology, r.cut, r.matching, jacobians);
-    const RestFrames<2> frames = rest_frames<2>(out.map.cut.mesh);
-    out.quality =
-        map_quality<2>(linear_parts<2>(out.map.cut.mesh, frames, out.map.uv), frames.volume);
+    out.quality = measured_quality(out.map);
     return out;
 }
 
@@ -210,7 +216,10 @@ SeamlessResult seamless_parameterization(const SimplicialMesh& input,
                                          const std::optional<FrameFieldInput>& field,
                                          const SeamlessOptions& options, const Logger& logger) {
     // At unit scale (simplicial_mesh.h, scale_exponent): a surface at 1e100 or 1e-100 is solved
-    // as at 1, with the same bits; (u, v) are in units of H, so only lengths are scaled back.
+    // as at 1, with the same bits; (u, v) are in units of H, so lengths are scaled back. The
+    // maps' qualities (isometric and volumetric distortions see the scale) are measured again as
+    // the input's: (u, v) over the input surface, both sides times 2^-k so that the measure
+    // neither overflows nor underflows (as the mesh driver's verification does).
     const int k = scale_exponent(input.vertices);
     if (k == 0) return seamless_in_mesh_units(input, field, options, logger);
     SimplicialMesh unit = input;
@@ -219,9 +228,11 @@ SeamlessResult seamless_parameterization(const SimplicialMesh& input,
     in_unit.scale = std::ldexp(options.scale, -k);
     SeamlessResult r = seamless_in_mesh_units(unit, field, in_unit, logger);
     const double back = std::ldexp(1.0, k);
+    for (VerifiedSeamlessMap* m : {&r.plain, &r.result}) {
+        if (m->map.cut.mesh.num_simplices() > 0) m->quality = measured_quality(m->map, 1.0 / back);
+        m->map.cut.mesh.vertices *= back;
+    }
     r.surface.vertices *= back;
-    r.plain.map.cut.mesh.vertices *= back;
-    r.result.map.cut.mesh.vertices *= back;
     r.scale *= back;
     return r;
 }

@@ -51,7 +51,7 @@ IndexList read_index_list(const std::string& path) {
             if (set_apart || repeated) {
                 first = 1;
             } else {
-                first_may_be_count = true;
+                first_may_be_count = following > 0;  // a lone number counts nothing
             }
         } else if (first_line_comment) {
             reader.fail_at(lines[0], "count header says " + std::to_string(values[0]) + " but " +

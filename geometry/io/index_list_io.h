@@ -12,6 +12,7 @@
 // disagrees with the count after it is an error when the same marks set it apart (a comment, or
 // every line after it holding several numbers); otherwise it is an index. A first line of several
 // numbers (`3 10 20 30`) is a list of indices.
+
 #include <string>
 #include <vector>
 
@@ -37,8 +38,9 @@ IndexList read_index_list(const std::string& path);
 std::string first_number_reading(const std::string& path, const IndexList& list);
 
 /// Writes a count line marked by a comment (`3 # count`), then one index per line, so that the
-/// file reads back the same whatever its first index. Throws InvalidArgumentError on a negative or repeated index, and
-/// InputError when the file cannot be written (nothing is left at `path` then).
+/// file reads back the same whatever its first index. Throws InvalidArgumentError on a negative
+/// or repeated index, and InputError when the file cannot be written (nothing is left at `path`
+/// then).
 void write_index_list(const std::string& path, const std::vector<Index>& indices);
 
 }  // namespace sa

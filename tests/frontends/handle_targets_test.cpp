@@ -119,10 +119,20 @@ TEST(HandleTargets, PlanarRowsOfThreeNumbersTakeTheReadingThatFits) {
         },
         {"both.txt: rows of three numbers fit both `index x y`", "and `x y 0` (one per handle)",
          "write rows `x y`"}));
-    // Neither fits: the `index x y` reading's reason.
+    // Neither fits: the `index x y` reading's reason when the first numbers are integers, the
+    // `x y 0` reading's otherwise.
     EXPECT_TRUE(throws_input_error(
         [&] { read_handle_targets(handles, folder.write("no.txt", "2 1 1\n5 2 1\n"), 9, 2); },
         {"no.txt:2: vertex 5 is not a handle of"}));
+    EXPECT_TRUE(throws_input_error(
+        [&] { read_handle_targets(handles, folder.write("far.txt", "2 1 1\n99 2 2\n"), 9, 2); },
+        {"far.txt:2: vertex index 99 outside [0, 9)"}));
+    EXPECT_TRUE(throws_input_error(
+        [&] {
+            read_handle_targets(handles, folder.write("z.txt", "0.5 1 0\n1 2 0.25\n3 1 0\n"), 9,
+                                2);
+        },
+        {"z.txt:2: z = 0.25"}));
     // A handle list whose first number could be a count is read as a handle, and said so.
     const HandleTargets counted =
         read_handle_targets(folder.write("c.txt", "2\n0\n1\n"),

@@ -134,7 +134,7 @@ TEST(MeshTopology, PinchedVerticesAreFound) {
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()),
                   "bowtie.off: pinched at vertex 2: its triangles form 2 pieces that share no "
-                  "edge through it (1 such vertices); needs a fan");
+                  "edge through it (the only one); needs a fan");
     }
 
     SimplicialMesh boxes = grid_tetrahedra(1, 1, 1);  // the unit cube, and a copy at (1, 1, 1)

@@ -4,7 +4,8 @@
 // Round l = 0, 1, ..., l_max:
 //   1. positions: for l = 0 the start of submesh_start.h (the initial map, the paper's M^0, or an
 //      accelerated ARAP or ASAP iterate from it, whichever has the fewest bad simplices); then
-//      the result of the previous round;
+//      the result of the previous round (a round that repaired no region ends the rounds: the
+//      next would solve the same regions from the same positions);
 //   2. bad simplices: those the barrier rejects (inverted, at or over the bound, or so distorted
 //      that e^{s d} is beyond the barrier's exponent cap, unless the start came from the
 //      untangling) and degenerate ones (submesh_start.h's bad_simplices());
@@ -15,7 +16,8 @@
 //   4. each region is a mapping problem of its own: its vertices shared with simplices outside
 //      it are fixed (with the original handles); it is solved by the full Simplex Assembly
 //      (mode kFull) and its result kept only if verified; a region that fails grows by two rings
-//      and is solved again, up to m_max rings. Regions that overlap after growing conflict: the
+//      and is solved again, up to m_max rings, unless the rings add nothing (the region is its
+//      whole component: solved again, it would fail the same way). Regions that overlap after growing conflict: the
 //      conflict graph is coloured and each colour's regions are solved side by side with TBB.
 // When options.max_time_seconds runs out, the start stops at its best iterate so far and no
 // further colour or round is begun; the positions reached are the result.

@@ -52,7 +52,7 @@ TEST(IndexListIo, AnUnmarkedFirstNumberIsAnIndexAndSaidSo) {
               std::string::npos);
     const IndexList single = read_index_list(folder.write("zero.txt", "0\n"));
     EXPECT_EQ(single.indices, (std::vector<Index>{0}));
-    EXPECT_TRUE(single.first_may_be_count);
+    EXPECT_FALSE(single.first_may_be_count);  // nothing after it to count
     const IndexList marked = read_index_list(folder.write("marked.txt", "2 # count\n7\n9\n"));
     EXPECT_EQ(marked.indices, (std::vector<Index>{7, 9}));
     EXPECT_FALSE(marked.first_may_be_count);
