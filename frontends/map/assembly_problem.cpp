@@ -182,8 +182,10 @@ void AssemblyProblem<D>::build_reduced(const AssemblyInput<D>& in) {
     std::set<Index> tagged(edge_simplex.begin(), edge_simplex.end());
     for (const auto& [s, v] : anchors) tagged.insert(s);
     for (Index h : in.handles) {
+        // Covered when a tagged simplex contains h: one of the simplices around it.
         bool covered = false;
-        for (Index s : tagged) covered |= local_index(mesh, s, h) >= 0;
+        for (Index i = topology.vertex_begin[h]; i < topology.vertex_begin[h + 1] && !covered; ++i)
+            covered = tagged.count(topology.simplices_of_vertex[i]) > 0;
         if (!covered) tagged.insert(topology.simplices_of_vertex[topology.vertex_begin[h]]);
     }
     std::vector<std::pair<Index, Vec<D>>> translations;
@@ -219,12 +221,17 @@ void AssemblyProblem<D>::build_reduced(const AssemblyInput<D>& in) {
     // Handle assembly (Eq. 8).
     std::vector<typename AffinePointTargetEnergy<D>::Target> targets;
     std::vector<std::array<Index, D * D + D>> target_elements;
+    std::vector<Index> tagged_around;  // the tagged simplices around a handle, increasing
     for (std::size_t k = 0; k < in.handles.size(); ++k) {
         const Index h = in.handles[k];
-        for (Index s : tagged) {
-            const int local = local_index(mesh, s, h);
-            if (local < 0) continue;
-            targets.push_back({frames.corner(s, local), in.targets[k]});
+        tagged_around.clear();
+        for (Index i = topology.vertex_begin[h]; i < topology.vertex_begin[h + 1]; ++i) {
+            const Index s = topology.simplices_of_vertex[i];
+            if (tagged.count(s) > 0) tagged_around.push_back(s);
+        }
+        std::sort(tagged_around.begin(), tagged_around.end());
+        for (Index s : tagged_around) {
+            targets.push_back({frames.corner(s, local_index(mesh, s, h)), in.targets[k]});
             target_elements.push_back(engine.affine_variables(s));
         }
     }
