@@ -111,8 +111,8 @@ int run_map_command(const MapArguments& a) {
         problem.handles = rest.handles;
         for (Index h : problem.handles) {
             if (h < 0 || h >= nv) {
-                throw InputError(a.rest + ": handle vertex " + std::to_string(h) +
-                                 " outside [0, " + std::to_string(nv) + ")");
+                throw InputError(a.rest + ": handle vertex " + std::to_string(h) + " outside [0, " +
+                                 std::to_string(nv) + ")");
             }
         }
     } else {
@@ -213,9 +213,9 @@ int run_map_command(const MapArguments& a) {
     std::ostringstream summary;
     summary << "  initial map: " << format_quality(result.initial_quality) << "\n"
             << "  result:      " << format_quality(result.final_quality) << "\n"
-            << "  " << to_string(options.variant) << ", " << result.num_variables
-            << " variables, " << result.newton.num_steps() + result.vertex_stage.num_steps()
-            << " iterations, time " << times << "\n"
+            << "  " << to_string(options.variant) << ", " << result.num_variables << " variables, "
+            << result.newton.num_steps() + result.vertex_stage.num_steps() << " iterations, time "
+            << times << "\n"
             << "  " << result.message << "\n"
             << "  wrote " << a.out << picture.wrote() << (a.report.empty() ? "" : ", " + a.report)
             << (series.empty() ? "" : ", " + series) << "\n";

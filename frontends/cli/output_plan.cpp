@@ -63,18 +63,17 @@ void check_folder(const fs::path& folder, const std::string& option, const std::
     ::unlink(probe.c_str());
 }
 
-/// Writes `text` to standard output and flushes it; throws InputError when that fails.
-void write_standard_output(const std::string& text) {
+}  // namespace
+
+void flush_standard_output() {
     errno = 0;
-    std::cout << text << std::flush;
+    std::cout.flush();
     if (std::fflush(stdout) == 0 && std::ferror(stdout) == 0 && std::cout) return;
     const int reason = errno;
     if (reason == EPIPE) await_broken_pipe_cleanup();
     throw InputError(std::string("cannot write to standard output (") +
                      (reason != 0 ? std::strerror(reason) : "write error") + ")");
 }
-
-}  // namespace
 
 OutputPlan::OutputPlan(bool overwrite) : overwrite_(overwrite) {
     set_interruption_cleanup([this] { roll_back(); });
@@ -218,7 +217,8 @@ std::string OutputPlan::staged(const std::string& path) const {
 }
 
 void OutputPlan::commit(const std::string& summary) {
-    write_standard_output(summary);
+    std::cout << summary;
+    flush_standard_output();
     const auto lock = output_lock();
     std::vector<std::string> renamed;
     for (const Entry& f : files_) {

@@ -38,6 +38,11 @@ namespace sa::cli {
 /// checks, not after the solve. OutputPlan::check() calls it on its files.
 void check_vtk_writer(const std::string& option, const std::string& path);
 
+/// Flushes standard output; throws InputError `cannot write to standard output (WHY)` when it
+/// fails (a full disk). On a closed pipe with SIGPIPE handled it does not return: the
+/// interruption's cleanup ends the process by SIGPIPE (interruption.h).
+void flush_standard_output();
+
 class OutputPlan {
   public:
     /// `overwrite`: --force, existing files may be replaced.

@@ -233,8 +233,8 @@ int run_polycube_command(const PolycubeArguments& arguments) {
     });
     std::ostringstream summary;
     summary << solve.message << "\n"
-            << "conformal distortion max " << solve.verification.quality.conformal.max
-            << ", mean " << solve.verification.quality.conformal.mean << "; isometric max "
+            << "conformal distortion max " << solve.verification.quality.conformal.max << ", mean "
+            << solve.verification.quality.conformal.mean << "; isometric max "
             << solve.verification.quality.isometric.max << "; "
             << (solve.rounds.empty() ? std::string()
                                      : std::to_string(solve.rounds.size()) + " rounds, ")

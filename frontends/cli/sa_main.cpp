@@ -13,8 +13,6 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <iostream>
 #include <new>
 #include <system_error>
@@ -26,6 +24,7 @@
 #include "frontends/cli/interruption.h"
 #include "frontends/cli/map_command.h"
 #include "frontends/cli/out_of_memory.h"
+#include "frontends/cli/output_plan.h"
 #include "frontends/cli/param_command.h"
 #include "frontends/cli/polycube_command.h"
 #include "frontends/cli/runtime_settings.h"
@@ -62,12 +61,12 @@ std::string command_list(CLI::App& app) {
 /// summary before the outputs are in place; this catches what a command printed after.
 int check_standard_output(int status) {
     if (status != sa::cli::kExitVerified && status != sa::cli::kExitNotVerified) return status;
-    errno = 0;
-    const bool failed = std::fflush(stdout) != 0 || std::ferror(stdout) != 0 || !std::cout;
-    if (!failed) return status;
-    const int reason = errno;
-    const std::string why = reason != 0 ? std::strerror(reason) : "write error";
-    return report("error", "cannot write to standard output (" + why + ")", sa::cli::kExitBadInput);
+    try {
+        sa::cli::flush_standard_output();
+    } catch (const sa::Error& e) {
+        return report("error", e.what(), sa::cli::kExitBadInput);
+    }
+    return status;
 }
 
 int run(int argc, char** argv) {

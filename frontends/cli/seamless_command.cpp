@@ -137,18 +137,18 @@ int run_seamless_command(const SeamlessArguments& a) {
     if (!r.infeasible.empty()) {
         // Diagnosed before optimizing: no map is written.
         if (!a.report.empty()) {
-            const nlohmann::json report =
-                {{"command", "seamless"},
-                 {"mesh", a.mesh},
-                 {"faces", mesh.num_simplices()},
-                 {"vertices", mesh.num_vertices()},
-                 {"field", a.field.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.field)},
-                 {"field_source", r.field_source},
-                 {"singularities_before", singularities_json(r.singularities_before)},
-                 {"infeasible", {{"description", r.infeasible}}},
-                 {"success", false},
-                 {"message", r.message},
-                 {"times", {{"read", read_time}, {"total", total.seconds()}}}};
+            const nlohmann::json report = {
+                {"command", "seamless"},
+                {"mesh", a.mesh},
+                {"faces", mesh.num_simplices()},
+                {"vertices", mesh.num_vertices()},
+                {"field", a.field.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.field)},
+                {"field_source", r.field_source},
+                {"singularities_before", singularities_json(r.singularities_before)},
+                {"infeasible", {{"description", r.infeasible}}},
+                {"success", false},
+                {"message", r.message},
+                {"times", {{"read", read_time}, {"total", total.seconds()}}}};
             plan.write(a.report, [&](const std::string& path) { write_json(path, report); });
         }
         plan.commit("  " + r.message + (a.report.empty() ? "" : "\n  wrote " + a.report) + "\n");

@@ -164,15 +164,14 @@ HandleTargets read_handle_targets(const std::string& handles_path, const std::st
     // Targets alone: rows `index x y z`.
     if (handles_path.empty()) {
         if (is_mesh_file(targets_path)) {
-            throw InputError(targets_path +
-                             ": a mesh file gives positions, not handles; give the handle list "
-                             "too, or rows `index " + xy + "`");
+            throw InputError(targets_path + ": a mesh file gives positions, not handles; give " +
+                             "the handle list too, or rows `index " + xy + "`");
         }
         PositionRows rows = read_position_rows(targets_path, dimension, num_vertices);
         if (!rows.indexed()) {
             throw InputError(targets_path + ":" + std::to_string(rows.lines.front()) +
-                             ": rows without a vertex index; alone, the targets file needs rows "
-                             "`index " + xy + "` (or give the handle list)");
+                             ": rows without a vertex index; alone, the targets file needs " +
+                             "rows `index " + xy + "` (or give the handle list)");
         }
         result.handles = std::move(rows.indices);
         result.targets = std::move(rows.positions);
@@ -248,8 +247,8 @@ HandleTargets read_handle_targets(const std::string& handles_path, const std::st
         }
     }
     if (as_indexed && as_plain) {
-        throw InputError(targets_path + ": rows of three numbers fit both `index x y` (the handles "
-                         "of " + handles_path + ") and `x y 0` (one per " + per +
+        const std::string both = ": rows of three numbers fit both `index x y` (the handles of ";
+        throw InputError(targets_path + both + handles_path + ") and `x y 0` (one per " + per +
                          "); write rows `x y`, or rows `index x y` without --handles");
     }
     if (as_indexed) {
@@ -267,7 +266,7 @@ HandleTargets read_handle_targets(const std::string& handles_path, const std::st
     // Neither fits: why the `index x y` reading failed, unless the first numbers are not all
     // integers (then the rows were meant as positions).
     std::rethrow_exception(plain_error && !integer_first_column(targets_path) ? plain_error
-                                                                                : indexed_error);
+                                                                              : indexed_error);
 }
 
 void check_target_reach(const Eigen::MatrixXd& rest, const HandleTargets& handle_targets) {

@@ -88,8 +88,8 @@ struct SimplexAssemblyOptions : AssemblyEngineOptions {
     // The submesh strategy (submesh_assembly.h), with the paper's m, m_max and l_max.
     SolveMode mode = SolveMode::kAuto;
     int rings = 4;       ///< m: rings of simplices around the bad ones
-    int max_rings = 20;  ///< m_max: a region that fails grows by 2 rings up to this (while it grows)
-    int max_rounds = 2;  ///< l_max: rounds after the first (while a round repairs a region)
+    int max_rings = 20;  ///< m_max: a failed region grows by 2 rings up to this, while it grows
+    int max_rounds = 2;  ///< l_max: rounds after the first, while a round repairs a region
     /// The first round's regions also surround every simplex whose barrier distortion d is within
     /// this share of its finite bound K: d >= d_I + (1 - band)(K - d_I), d_I the distortion of the
     /// identity (each bounded barrier alike). Solved with the bound K, their barrier pushes the

@@ -234,8 +234,8 @@ void require_no_flat_tets(const PreparedPolycube& p, Index input_vertices,
 
 Eigen::MatrixXd PreparedPolycube::rest_positions() const {
     // Rows are turned as x R^T; the input's own vertices are copied, not turned back.
-    Eigen::MatrixXd x = in_input_units(orientation ? mesh.vertices * orientation->rotation
-                                                   : mesh.vertices);
+    Eigen::MatrixXd x =
+        in_input_units(orientation ? mesh.vertices * orientation->rotation : mesh.vertices);
     x.topRows(input.num_vertices()) = input.vertices;
     return x;
 }

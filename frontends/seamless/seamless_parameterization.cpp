@@ -6,8 +6,8 @@
 
 #include "frontends/seamless/cone_obstruction.h"
 #include "geometry/cut_graph.h"
-#include "geometry/mesh_topology.h"
 #include "geometry/frame_field.h"
+#include "geometry/mesh_topology.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
 #include "optim/time_budget.h"
@@ -35,8 +35,7 @@ CurlStats curl_stats(const Eigen::VectorXd& curl) {
 /// `uv_scale`.
 MapQuality measured_quality(const SeamlessMap& map, double uv_scale = 1.0) {
     const RestFrames<2> frames = rest_frames<2>(map.cut.mesh);
-    return map_quality<2>(linear_parts<2>(map.cut.mesh, frames, uv_scale * map.uv),
-                          frames.volume);
+    return map_quality<2>(linear_parts<2>(map.cut.mesh, frames, uv_scale * map.uv), frames.volume);
 }
 
 VerifiedSeamlessMap poisson_verified(const SimplicialMesh& mesh, const MeshTopology& topology,

@@ -17,8 +17,9 @@
 //      it are fixed (with the original handles); it is solved by the full Simplex Assembly
 //      (mode kFull) and its result kept only if verified; a region that fails grows by two rings
 //      and is solved again, up to m_max rings, unless the rings add nothing (the region is its
-//      whole component: solved again, it would fail the same way). Regions that overlap after growing conflict: the
-//      conflict graph is coloured and each colour's regions are solved side by side with TBB.
+//      whole component: solved again, it would fail the same way). Regions that overlap after
+//      growing conflict: the conflict graph is coloured and each colour's regions are solved side
+//      by side with TBB.
 // When options.max_time_seconds runs out, the start stops at its best iterate so far and no
 // further colour or round is begun; the positions reached are the result.
 // Results do not depend on the thread count: each region's solve is deterministic, regions of
