@@ -10,18 +10,23 @@
 namespace sa {
 namespace {
 
+// Q diag(eigenvalues) Q^T with a random orthogonal Q, computed at dynamic size: a fixed-size
+// product of 20 x 20 matrices is slow to compile.
 template <int N>
 Mat<N> random_symmetric(std::mt19937& rng, const Vec<N>& eigenvalues) {
     std::normal_distribution<double> normal;
     Eigen::MatrixXd a(N, N);
     for (int i = 0; i < N * N; ++i) a(i) = normal(rng);
     const Eigen::HouseholderQR<Eigen::MatrixXd> qr(a);
-    const Mat<N> q = qr.householderQ();
-    return q * eigenvalues.asDiagonal() * q.transpose();
+    const Eigen::MatrixXd q = qr.householderQ();
+    const Eigen::VectorXd d = eigenvalues;
+    return Eigen::MatrixXd(q * d.asDiagonal() * q.transpose());
 }
 
-double smallest_eigenvalue(const Mat<4>& h) {
-    return Eigen::SelfAdjointEigenSolver<Mat<4>>(h, Eigen::EigenvaluesOnly).eigenvalues()(0);
+// The eigenvalues of a symmetric block in increasing order, by one dynamic-size solver for every
+// size: fixed-size solvers are slow to compile, and the library's own are the ones under test.
+Eigen::VectorXd eigenvalues(const Eigen::MatrixXd& h) {
+    return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(h, Eigen::EigenvaluesOnly).eigenvalues();
 }
 
 TEST(HessianProjection, ClampRaisesEveryEigenvalueToEpsilon) {
@@ -29,7 +34,7 @@ TEST(HessianProjection, ClampRaisesEveryEigenvalueToEpsilon) {
     const double eps = 1e-3;
     Mat<4> h = random_symmetric(rng, Vec<4>(-5.0, -0.1, 2.0, 7.0));
     EXPECT_TRUE(project_hessian_block<4>(h, ProjectionMode::kClamp, eps));
-    const Vec<4> values = Eigen::SelfAdjointEigenSolver<Mat<4>>(h).eigenvalues();
+    const Eigen::VectorXd values = eigenvalues(h);
     EXPECT_NEAR(values(0), eps, 1e-12);
     EXPECT_NEAR(values(1), eps, 1e-12);
     EXPECT_NEAR(values(2), 2.0, 1e-12);
@@ -40,7 +45,7 @@ TEST(HessianProjection, AbsMirrorsNegativeEigenvalues) {
     std::mt19937 rng(2);
     Mat<4> h = random_symmetric(rng, Vec<4>(-5.0, -0.1, 2.0, 7.0));
     EXPECT_TRUE(project_hessian_block<4>(h, ProjectionMode::kAbs, 1e-8));
-    const Vec<4> values = Eigen::SelfAdjointEigenSolver<Mat<4>>(h).eigenvalues();
+    const Eigen::VectorXd values = eigenvalues(h);
     EXPECT_NEAR(values(0), 0.1, 1e-12);
     EXPECT_NEAR(values(1), 2.0, 1e-12);
     EXPECT_NEAR(values(2), 5.0, 1e-12);
@@ -52,7 +57,7 @@ TEST(HessianProjection, ShiftAddsAMultipleOfTheIdentity) {
     const Mat<4> original = random_symmetric(rng, Vec<4>(-5.0, -0.1, 2.0, 7.0));
     Mat<4> h = original;
     EXPECT_TRUE(project_hessian_block<4>(h, ProjectionMode::kShift, 1e-8));
-    EXPECT_NEAR(smallest_eigenvalue(h), 1e-8, 1e-11);
+    EXPECT_NEAR(eigenvalues(h)(0), 1e-8, 1e-11);
     const Mat<4> difference = h - original;
     EXPECT_TRUE(difference.isApprox((5.0 + 1e-8) * Mat<4>::Identity(), 1e-12));
 }
@@ -92,10 +97,6 @@ void expect_projected_alike(unsigned seed) {
     std::mt19937 rng(seed);
     const Vec<N> spectrum = Vec<N>::LinSpaced(-5.0, 7.0);
     const double eps = 1e-3;
-    // Checked with dynamic-size solvers: a fixed-size one of this arity is slow to compile.
-    const auto eigenvalues = [](const Mat<N>& h) {
-        return Vec<N>(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(h).eigenvalues());
-    };
 
     Mat<N> h = random_symmetric<N>(rng, spectrum);
     EXPECT_TRUE(project_hessian_block<N>(h, ProjectionMode::kClamp, eps));
