@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Configures and builds the sanitizer build in build-asan/ (SA_SANITIZER_BUILD): clang 14,
-# -fsanitize=address,undefined on every target (SA_SANITIZE), libFuzzer coverage of the file
+# -fsanitize=address,undefined on every target (SA_SANITIZE; UBSan's per-access checks are left
+# to AddressSanitizer, CMakeLists.txt says which), libFuzzer coverage of the file
 # readers and the fuzz targets (SA_FUZZ), -O2 with line tables and assertions on (Eigen's index
 # checks included). The sa command there links the shared libraries and uses the sanitizer's
 # allocator. Arguments are build targets (default: all). Used by run-sanitizer-tests.sh and
