@@ -26,8 +26,8 @@ enum class Variant {
     /// r-SA: A_i for every simplex, T_p only on the simplices of the Steiner tree through the
     /// handles and of loops generating the mesh's first homology (default). Eq. 7 alone glues
     /// the mesh only where every loop is contractible; the loops' translations, agreeing at
-    /// their vertices (Eq. 9), close the map around holes and handles too (README.md, "Where we
-    /// depart from the paper").
+    /// their vertices (Eq. 9), close the map around holes and handles too (docs/algorithm.md,
+    /// "Departures from the paper").
     kReduced,
     kFull,    ///< f-SA: A_i and T_i for every simplex (Eqs. 2, 3)
     kVertex,  ///< v-SA: per-simplex copies of the vertex positions

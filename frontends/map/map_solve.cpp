@@ -140,8 +140,8 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
     if (options.untangle_fallback && std::isfinite(options.max_time_seconds))
         assembly_options.max_time_seconds *= 0.5;
     AssemblyEngineOptions schedule = assembly_options;  // the engine's part of them
-    // The 1e-6 lambda shift is meant for r-SA's few, possibly redundant translations (README.md,
-    // "Where we depart from the paper").
+    // The 1e-6 lambda shift is meant for r-SA's few, possibly redundant translations
+    // (docs/algorithm.md, "Departures from the paper").
     if (options.variant != Variant::kReduced) schedule.translation_shift = 0.0;
     Eigen::MatrixXd handover;  // the feasible recovered mesh that ended the assembly, if any
     AssemblyHooks hooks;
