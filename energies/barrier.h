@@ -8,7 +8,7 @@
 // e^{s d} overflows a double at s d = 709.8, which the 3D conformal distortion reaches at
 // sigma_max / sigma_min of about 53: a feasible simplex (det A > 0, d < K) would read as
 // infeasible. When the data force such a simplex (a fixed boundary whose own triangles or
-// tetrahedra are that distorted: ../shared/data/tlc/armadillo-598 has 77 of them, BENCHMARKS.md),
+// tetrahedra are that distorted, as in the Locally Injective Mappings benchmark's hard class),
 // no map would be feasible for the barrier. Above s d = kBarrierExponentCap the exponential is
 // therefore continued by its second-order Taylor polynomial, e^c (1 + u + u^2 / 2) with
 // u = s d - c: the same value, slope and curvature at c, convex and increasing, finite for every

@@ -22,7 +22,7 @@
 // (converged: the fixed-point residual, the usual test of Anderson acceleration), after
 // max_iterations, after max_time_seconds, or when the caller's after_iteration returns true.
 //
-// Where the fixed point has inverted simplices (the knight's pose: 52), the local step's
+// Where the fixed point has inverted simplices, the local step's
 // rotation jumps as their two smallest singular values cross, G is not smooth there, and about
 // a third of the accelerated points are rejected: such poses still take hundreds of iterations.
 

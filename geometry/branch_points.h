@@ -8,8 +8,8 @@
 // tau). A map that keeps the positions of such a loop must fold or branch inside it, however
 // large the loop: no submesh with fixed outer vertices can repair it, only a change of the map
 // out to the free boundary of the mesh. When the fold sits where the start's conformal factor
-// collapses (camel_b.obj Loop-subdivided 4 times: LSCM's |det A| falls to 1e-7 of its median
-// there), the paper's submesh strategy stops at such folds.
+// collapses (an LSCM start's |det A| can fall to 1e-7 of its median on a long protrusion), the
+// paper's submesh strategy stops at such folds.
 //
 // Composition removes them: with w_k the image of fold k and tau_k its turning number,
 //     G(w) = integral of prod_k (w - w_k)^(-(tau_k - 1) / tau_k) dw

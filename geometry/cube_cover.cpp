@@ -219,7 +219,7 @@ CubeCover cube_cover_map(const SimplicialMesh& mesh, const TetBoundary& boundary
         // The vertices of every edge along this axis in their order between its corners, spaced
         // as at rest (arc length): a vertex on two planes moves only along their line, so one
         // that starts beyond its neighbour on the line could pass it only by collapsing the edge
-        // between them, which no inversion-free path does (robustPolycube/cup). The planes keep
+        // between them, which no inversion-free path does. The planes keep
         // their coordinates; the rest follows the Laplacian again.
         Eigen::VectorXd pinned = Eigen::VectorXd::Constant(nv, kNaN);
         bool any = false;

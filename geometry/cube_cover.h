@@ -22,8 +22,8 @@
 //
 // The same holds for the vertices inside an edge: on the line where its two planes meet each has
 // one degree of freedom, so a vertex placed beyond its neighbour along the line could only get
-// back past it by collapsing the mesh edge between them, which no inversion-free path does (on
-// S1 such an edge is U-shaped at rest; on cup one turns back at a corner). So, once the planes
+// back past it by collapsing the mesh edge between them, which no inversion-free path does (an
+// edge that is U-shaped at rest, or one that turns back at a corner). So, once the planes
 // are placed, the vertices of every edge along the axis are set in their order between its
 // corners, spaced by rest arc length, and the axis is solved once more with the planes and those
 // vertices held. The map may still fold (a chart pulled behind another, thin parts flattened):

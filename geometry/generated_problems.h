@@ -2,12 +2,12 @@
 // Mapping problems generated from a tetrahedral (or planar triangle) mesh, feasible by
 // construction, for tests and benchmarks of two hard classes:
 //
-//   fixed_boundary_problem   the Locally Injective Mappings benchmark's hard class (as
-//                            ../shared/data/tlc/armadillo-598): every boundary vertex is a handle
+//   fixed_boundary_problem   the Locally Injective Mappings benchmark's hard class: every
+//                            boundary vertex is a handle
 //                            at its image under a smooth deformation; the interior is placed by
 //                            a Tutte solve (uniform weights, boundary fixed) and moved by seeded
 //                            noise, which tangles it. The deformed mesh itself solves it.
-//   handle_slab_problem      a large deformation with handles moved (as deform/rabbit): the
+//   handle_slab_problem      a large deformation with handles moved: the
 //                            vertices of two end slabs are handles at their deformed positions,
 //                            every other vertex stays at rest, so the simplices next to the
 //                            slabs fold.
@@ -18,7 +18,7 @@
 //   bend   the axis bent into a circular arc of `amount` radians (lengths along the axis kept);
 // then, when `flatten` < 1, the coordinate along the box's shortest side scaled by `flatten`:
 // every simplex gets conformal distortion about 1 / flatten, so that the handles alone force the
-// barrier e^{s d} far beyond lambda_max (as armadillo-598's boundary does).
+// barrier e^{s d} far beyond lambda_max (as that benchmark's hard class does).
 
 #include <cstdint>
 #include <vector>

@@ -14,8 +14,9 @@
 // become beta therefore needs some tetrahedron under it with delta_con >= the least K for which
 // those ranges can sum to beta (wedge_distortion_bound()). The largest such K over the boundary
 // bounds max delta_con of any valid PolyCube map of these labels on this mesh, whatever the
-// solver: with polycube_withHexEx's S1.flags the +X chart ends in a 0.74 degree sliver at a
-// vertex on its edge with -Y, which must open to 180 degrees (BENCHMARKS.md, session 46).
+// solver: a chart that ends in a sliver of a fraction of a degree at a vertex on its edge with
+// another chart, where it must open to 180 degrees, forces a distortion in the hundreds
+// (BENCHMARKS.md, PolyCube).
 //
 // Angles in radians; positions in any units (angles do not see them).
 

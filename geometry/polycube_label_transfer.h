@@ -5,8 +5,8 @@
 // Surface vertices are matched to boundary vertices of the tetrahedral mesh by position: each to
 // the nearest one, which must lie within `tolerance` times that vertex's shortest boundary edge
 // (at most a quarter, so that the match is unambiguous). Files often round the coordinates
-// differently: S1.mesh has 6 significant digits, fastbndpolycube's boundary.obj 15, and some of
-// S1's boundary edges are only 400 times longer than the rounding. Triangles are then
+// differently (a tet mesh written with 6 significant digits, its surface with 15), and short
+// boundary edges can be only a few hundred times longer than the rounding. Triangles are then
 // matched by their vertex sets; the winding is not compared (labels take their side from the
 // geometry, geometry/polycube_labeling.h).
 

@@ -41,7 +41,7 @@
 //       factorization sees them. For an element that couples several groups of variables only
 //       through a low-rank term (an angle-sum barrier over the tetrahedra around a vertex), whose
 //       project_hessian() then majorizes that coupling by a block-diagonal matrix: a dense
-//       element of 14 x 9 variables made cup's factorization 3x what it is without it.
+//       element of many such groups makes the factorization several times denser.
 //
 //   Index num_elements() const;
 //       How many elements the energy's per-element data covers: Problem::add_term() rejects a

@@ -97,9 +97,9 @@ void quiet(cholmod_common& common) {
 
 /// Supernodes are merged into larger ones (with some explicit zeros) while they have fewer than
 /// 16, 64 or 128 columns (CHOLMOD's defaults: 4, 16, 48; the allowed share of zeros, zrelax, kept
-/// at its defaults): fewer and larger BLAS calls, faster per factorization on a 3D submesh, a full
-/// 3D system, botijo's vertex stage and a 1M-unknown grid Laplacian; larger settings (64, 128,
-/// 256 and more zeros) were slower on all of them (BENCHMARKS.md, "Figures moved out of the code").
+/// at its defaults): fewer and larger BLAS calls, faster per factorization on 3D submeshes, full
+/// 3D systems, vertex stages and large grid Laplacians; larger settings and more zeros were
+/// slower on all of them (BENCHMARKS.md, "Figures moved out of the code").
 void relax_supernodes(cholmod_common& common) {
     common.nrelax[0] = 16;
     common.nrelax[1] = 64;
@@ -110,7 +110,7 @@ void relax_supernodes(cholmod_common& common) {
 /// values, for the supernodal factor of A's analysis turned into that of P A P^T with the natural
 /// ordering (CholmodSupernodal::keep_structure_for_permuted_matrix). Given A's lower triangle and
 /// a permutation, cholmod_factorize transposes the matrix twice at every call (triu(PAP'), then
-/// its transpose: cholmod_transpose_sym was 7% of tlc/stgc-3d's full solve under perf); given the
+/// its transpose: a visible share of a 3D full solve's profile); given the
 /// lower triangle of an already permuted matrix with the natural ordering it factors the matrix
 /// as it is. The solves permute the right-hand sides and solutions.
 struct PrepermutedMatrix {
@@ -175,8 +175,8 @@ struct PrepermutedMatrix {
         }
     }
 
-    /// A gather (sequential writes) on the threads of the caller's arena: on deform/stretch's
-    /// full system (153,741 unknowns) the serial scatter by entry of A took 5.9% of the run.
+    /// A gather (sequential writes) on the threads of the caller's arena: a serial scatter by
+    /// entry of A is a visible share of a large full system's run.
     void fill(const SparseMatrix& lower) {
         const double* from = lower.valuePtr();
         double* to = permuted.valuePtr();
@@ -237,9 +237,9 @@ struct LinearSolver::Impl {
             case LinearSolverType::kCholmodSupernodal:
                 quiet(supernodal.emplace().cholmod());
                 // A single factorization (kAmd) keeps CHOLMOD's default merging: as fast once,
-                // and a smaller factor (LSCM of camel_b.obj Loop-subdivided 4 times, 0.92M
-                // unknowns: 76M stored entries against 123M), which matters where fresh memory
-                // is slow to touch (BENCHMARKS.md, "Planar parameterization at scale").
+                // and a smaller factor (about 40% fewer stored entries on a planar LSCM system
+                // of a million unknowns), which matters where fresh memory is slow to touch
+                // (BENCHMARKS.md, "Planar parameterization at scale").
                 if (ordering != FillOrdering::kAmd) relax_supernodes(supernodal->cholmod());
                 set_ordering(supernodal->cholmod(), ordering);
                 break;

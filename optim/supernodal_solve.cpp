@@ -21,9 +21,8 @@ constexpr double kLargestUsefulShare = 0.85;
 
 /// How far ahead of the column being read the substitutions prefetch the factor: 256 values
 /// (2 KB). The factor streams from memory after a factorization, and the hardware prefetcher
-/// stops at page boundaries: faster on the factors of tlc/stgc-3d and deform/stretch (bench/
-/// triangular_solve.cpp --refactor, two threads; BENCHMARKS.md); 4, 8 and 16 KB ahead were no
-/// better.
+/// stops at page boundaries (bench/triangular_solve.cpp --refactor measures it on 3D factors;
+/// BENCHMARKS.md, "Triangular solves alone"); farther ahead was no better.
 constexpr int kPrefetchAhead = 256;
 
 /// Prefetches the n values from `from` on (one request per 64-byte line).
@@ -50,11 +49,10 @@ double fixed_order_dot(const double* __restrict a, const double* __restrict b, i
 /// dimension m, the k x k lower triangle on top) and x of m entries, x[0, k) the right-hand side
 /// of its columns on entry and their solution y = L11^-1 x on exit, x[k, m) zero on entry and
 /// -L21 y on exit. Column by column, an axpy each down the whole column: one pass over the
-/// block, in order. Measured against it on the factors of tlc/stgc-3d's and deform/stretch's
-/// full systems, each solve after a factorization (bench/triangular_solve.cpp --refactor):
-/// Eigen's blocked triangular solve and gemv, a triangle pass then a rectangle pass, and panels
-/// of eight columns updating the rows below at once were no faster on stgc-3d, and the panels
-/// were slower on stretch's 4,222 supernodes of about 36 columns (BENCHMARKS.md).
+/// block, in order. Eigen's blocked triangular solve and gemv, a triangle pass then a rectangle
+/// pass, and panels of eight columns updating the rows below at once were no faster, and the
+/// panels slower on factors of many narrow supernodes (bench/triangular_solve.cpp --refactor;
+/// BENCHMARKS.md, "Triangular solves alone").
 void supernode_forward(const double* L, int m, int k, double* x) {
     for (int j = 0; j < k; ++j) {
         const double* column = L + std::ptrdiff_t(j) * m;

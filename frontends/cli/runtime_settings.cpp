@@ -48,7 +48,7 @@ __attribute__((constructor(101))) void one_blas_thread() {
 /// model number, and takes the SSE3 ones ("Prescott") for a model it does not know, even when the
 /// CPU has AVX2 or AVX-512: on a VM reporting an "Intel(R) Xeon(R) Processor" of family 6, model
 /// 207, large factorizations were much slower with them than with its AVX2 or AVX-512 ones
-/// (figures: BENCHMARKS.md, session 45). Then the kernels the CPU's features allow are chosen
+/// (figures: BENCHMARKS.md, PolyCube). Then the kernels the CPU's features allow are chosen
 /// instead, as OPENBLAS_CORETYPE would have at start: SkylakeX (AVX-512 F, BW, DQ, VL) or Haswell
 /// (AVX2, FMA). Nothing when OPENBLAS_CORETYPE is set, or OpenBLAS is not the BLAS.
 void blas_kernels_for_this_cpu() {

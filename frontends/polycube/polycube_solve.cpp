@@ -274,9 +274,9 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
     /// labelled triangle and its tetrahedron t, when every such t has a translation (f-SA; in
     /// r-SA the planes stay free and only the anchored simplex's trace holds the scale).
     /// Planarity alone (on A) is homogeneous in the map's scale, as are the conformal and angle
-    /// barriers, so E~_assembly fell by shrinking the map where its residuals were large (cup:
-    /// the median (det A)^(1/3) fell from 0.89 to 0.145 while the anchor's stayed near 1;
-    /// BENCHMARKS.md, session 44). The paper's 5.3 keeps the planes of the initial map; the
+    /// barriers, so E~_assembly fell by shrinking the map where its residuals were large (the
+    /// median simplex scale fell several times while the anchor's stayed near 1; BENCHMARKS.md,
+    /// PolyCube). The paper's 5.3 keeps the planes of the initial map; the
     /// vertex stage moves them again (each plane one variable).
     void add_plane_offsets(SimplexAssemblyEngine<3>& engine, const PluginStage<3>& stage) const {
         if (stage.mesh == nullptr || stage.frames == nullptr) return;
@@ -427,10 +427,9 @@ PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSol
     o.mode = SolveMode::kFull;
     // f-SA: the assembly holds every boundary vertex on its plane at the start's offset
     // (add_plane_offsets), which needs each boundary tetrahedron's translation. Without the
-    // offsets the assembly shrank the map (with r-SA on cup the median simplex scale fell from
-    // 0.89 to 0.078, the smallest to 0.003), so a tiny E~ no longer meant planar charts: the
-    // likely cause of the r-SA runs on cup that ended assembled and unverified (BENCHMARKS.md,
-    // sessions 39, 43 and 44).
+    // offsets the assembly shrank the map (with r-SA the median simplex scale could fall tenfold,
+    // the smallest a hundredfold more), so a tiny E~ did not mean planar charts, and runs ended
+    // assembled and unverified (BENCHMARKS.md, PolyCube).
     o.variant = Variant::kFull;
     log_line(logger, "polycube: " + std::to_string(independent_loops(prepared.boundary)) +
                          " independent loops (handles) in the solid; f-SA, the planes held at "

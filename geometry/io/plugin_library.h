@@ -2,7 +2,7 @@
 // Optional parts of the toolkit that link large libraries (VTK's file formats, VTK's OpenGL
 // rendering, Cairo, OpenMesh) live in shared libraries loaded on first use, so that a command that
 // never touches them does not pay for loading them: linked into every program, they made each
-// start several times slower, against the 0.1 s a small mapping problem is allowed in all
+// start several times slower, a large share of a small mapping problem's whole run
 // (BENCHMARKS.md, "Figures moved out of the code").
 //
 // A plugin `lib<name>.so` exports one extern "C" function `symbol` returning a pointer to a

@@ -4,11 +4,10 @@
 //
 // Why: one triangular solve per Newton iteration reads the whole factor twice (L, then L^T), one
 // dense supernode after another. CHOLMOD does it on one thread (dtrsv and dgemv per supernode);
-// on tlc/stgc-3d's full system it was the largest cost of an iteration after the factorization,
-// and the second core was idle during it; split here, it takes about half as long (BENCHMARKS.md,
-// "Triangular solves alone", bench/iteration_cost.py). The split is limited by the
-// top, which on a mesh's tree is mostly a chain of large separator supernodes (stgc-3d: 28% of
-// the factor in 20 supernodes, serial).
+// on a 3D mapping problem's full system it is the largest cost of an iteration after the
+// factorization, with the second core idle (BENCHMARKS.md, "Triangular solves alone",
+// bench/iteration_cost.py). The split is limited by the top, which on a mesh's tree is mostly a
+// chain of large separator supernodes, solved serially.
 //
 // The result also does not depend on where the factor lies in memory: the dot products sum in
 // fixed lanes (Eigen's start at the first aligned entry), so runs that allocate differently give
