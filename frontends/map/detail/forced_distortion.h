@@ -1,6 +1,6 @@
 #pragma once
 // Simplices whose shape the handles alone decide, and whose barrier the A-variable assembly cannot
-// hold there. Internal to frontends/simplex_assembly.
+// hold there. Internal to the mesh driver (frontends/map).
 //
 // When every vertex of a simplex is a handle, an assembled map has that simplex's linear part A
 // at its data value (the handles' targets). At A the barrier's gradient is e^{s d} s grad d, and

@@ -2,7 +2,7 @@
 // What both solve modes of the driver share: the input checked, normalized (rest diagonal 1,
 // each side centred on its bounding box) and disassembled, with an anchor per connected part
 // without handles; vertex recovery with the handles at their targets; verification of output
-// positions. Internal to frontends/simplex_assembly.
+// positions. Internal to the mesh driver (frontends/map).
 
 #include <memory>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Verification of a map that differs from an already verified one on a few vertices (the
 // optimal-bound rounds in the submesh mode, which move the vertices of their regions only).
-// Internal to frontends/simplex_assembly.
+// Internal to the mesh driver (frontends/map).
 //
 // It measures what verify_result() measures (prepared_problem.h), from the positions, but only
 // on the simplices that have a vertex whose position changed (inverted, degenerate, the barrier's

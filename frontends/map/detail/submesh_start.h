@@ -1,6 +1,6 @@
 #pragma once
 // The submesh mode's start (round 0's positions) and its test for bad simplices. Internal to
-// frontends/simplex_assembly.
+// the mesh driver (frontends/map).
 //
 // From the initial map with the handles at their targets, unless the regions of options.rings
 // rings around its bad simplices hold no more simplices than the auto mode solves in full

@@ -1,5 +1,6 @@
 #pragma once
-// The last resort of a run that ends without a valid map. Internal to frontends/simplex_assembly.
+// The last resort of a run that ends without a valid map. Internal to the mesh driver
+// (frontends/map).
 //
 // Simplex Assembly can fail where a valid map exists: its barrier E_C = e^{s d} must be finite at
 // the start and its assembly must hold every simplex whose vertices are handles at its data,
