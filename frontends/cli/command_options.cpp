@@ -1,6 +1,7 @@
 #include "frontends/cli/command_options.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -455,6 +456,40 @@ CLI::App* add_deform_command(CLI::App& app, DeformArguments& a) {
     add_threads_option(*deform, a.threads);
     add_force_and_quiet(*deform, a.force, a.quiet);
     return deform;
+}
+
+namespace {
+
+template <class Arguments>
+void parse_words(CLI::App* (*add)(CLI::App&, Arguments&), std::vector<std::string> words,
+                 Arguments& arguments) {
+    CLI::App app;
+    CLI::App* command = add(app, arguments);
+    words.insert(words.begin(), command->get_name());
+    std::reverse(words.begin(), words.end());  // CLI11 takes them last first
+    try {
+        app.parse(words);
+    } catch (const CLI::ParseError& e) {
+        throw CommandLineError(e.what());
+    }
+}
+
+}  // namespace
+
+void parse_command_line(const std::vector<std::string>& words, MapArguments& arguments) {
+    parse_words(add_map_command, words, arguments);
+}
+void parse_command_line(const std::vector<std::string>& words, ParamArguments& arguments) {
+    parse_words(add_param_command, words, arguments);
+}
+void parse_command_line(const std::vector<std::string>& words, SeamlessArguments& arguments) {
+    parse_words(add_seamless_command, words, arguments);
+}
+void parse_command_line(const std::vector<std::string>& words, PolycubeArguments& arguments) {
+    parse_words(add_polycube_command, words, arguments);
+}
+void parse_command_line(const std::vector<std::string>& words, DeformArguments& arguments) {
+    parse_words(add_deform_command, words, arguments);
 }
 
 }  // namespace sa::cli

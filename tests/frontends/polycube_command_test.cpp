@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 #include <unistd.h>
-#include <CLI/CLI.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -39,18 +38,14 @@ class PolycubeCommand : public ::testing::Test {
     /// Parses `args` after `sa polycube` and checks them and the output locations; the
     /// exception's message, or "". The arguments are kept in `arguments_`.
     std::string check(std::vector<std::string> args, PolycubePlan* plan = nullptr) {
-        CLI::App app;
         arguments_ = {};
-        add_polycube_command(app, arguments_);
-        args.insert(args.begin(), "polycube");
-        std::reverse(args.begin(), args.end());  // CLI11 takes them last first
         try {
-            app.parse(args);
+            parse_command_line(args, arguments_);
             const PolycubePlan p = check_polycube_arguments(arguments_);
             OutputPlan outputs(arguments_.force);
             plan_polycube_files(arguments_, p, outputs);
             if (plan != nullptr) *plan = p;
-        } catch (const CLI::ParseError& e) {
+        } catch (const CommandLineError& e) {
             return std::string("parse: ") + e.what();
         } catch (const Error& e) {
             return e.what();
@@ -176,14 +171,10 @@ TEST_F(PolycubeCommand, EndToEndOnAGeneratedMesh) {
         text.insert(text.rfind("End"), "Quadrilaterals\n1\n1 2 3 4 0\n");
         std::ofstream(path("bent.mesh")) << text;
     }
-    CLI::App app;
     PolycubeArguments arguments;
-    add_polycube_command(app, arguments);
-    std::vector<std::string> args = {"polycube",     "--mesh",          path("bent.mesh"), "--out",
-                                     path("o.mesh"), "--report",        path("o.json"),    "--vtu",
-                                     path("o.vtu"),  "--optimal-bound", "--quiet"};
-    std::reverse(args.begin(), args.end());
-    app.parse(args);
+    parse_command_line({"--mesh", path("bent.mesh"), "--out", path("o.mesh"), "--report",
+                        path("o.json"), "--vtu", path("o.vtu"), "--optimal-bound", "--quiet"},
+                       arguments);
     ::testing::internal::CaptureStderr();
     const int status = run_polycube_command(arguments);
     const std::string errors = ::testing::internal::GetCapturedStderr();
@@ -238,16 +229,10 @@ TEST_F(PolycubeCommand, ABoundBelowWhatTheLabelsForceIsRefused) {
     const double floor = prepared.angle_bound.bound;
     ASSERT_GT(floor, 1.0);
     ASSERT_LT(floor, 2.0);
-    CLI::App app;
     PolycubeArguments arguments;
-    add_polycube_command(app, arguments);
-    std::vector<std::string> args = {
-        "polycube",     "--mesh",       path("bent.mesh"),
-        "--out",        path("o.mesh"), "--report",
-        path("o.json"), "--bound",      std::to_string(0.5 + 0.5 * floor),
-        "--quiet"};
-    std::reverse(args.begin(), args.end());
-    app.parse(args);
+    parse_command_line({"--mesh", path("bent.mesh"), "--out", path("o.mesh"), "--report",
+                        path("o.json"), "--bound", std::to_string(0.5 + 0.5 * floor), "--quiet"},
+                       arguments);
     try {
         run_polycube_command(arguments);
         ADD_FAILURE() << "not refused";
