@@ -137,7 +137,7 @@ def run_case(a, case):
         chk = dict(ok=False, error=(c.stdout + c.stderr).strip()[-300:])
     row['verdict'] = 'verified' if r['code'] == 0 else 'unverified'
     if bool(chk.get('ok')) != (r['code'] == 0):
-        row['note'] = 'sa exit %d, the checker says %s' % (r['code'], chk.get('ok'))
+        row['disagreement'] = 'sa exit %d, the checker says ok = %s' % (r['code'], chk.get('ok'))
     if case['measure'] in chk:
         row['max'], row['mean'] = chk[case['measure']]
     return row
@@ -150,7 +150,9 @@ def compare(row, expected, tolerance, table):
     reasons = []
     if row['verdict'] != expected['verdict']:
         reasons.append('verdict %s, expected %s' % (row['verdict'], expected['verdict']))
-    if 'note' in row:
+    if 'disagreement' in row:
+        reasons.append(row['disagreement'])
+    elif 'note' in row and row['verdict'] != expected['verdict']:
         reasons.append(row['note'])
     for key in ('max', 'mean'):
         if expected[key] in ('', '-') or row['verdict'] != expected['verdict']:
