@@ -134,21 +134,23 @@ int run_seamless_command(const SeamlessArguments& a) {
     const SeamlessResult r =
         seamless_parameterization(mesh, field, options, stderr_logger(a.quiet));
     stage.lap();
+    // What every report says of the input and its field.
+    nlohmann::json report = {
+        {"command", "seamless"},
+        {"mesh", a.mesh},
+        {"faces", mesh.num_simplices()},
+        {"vertices", mesh.num_vertices()},
+        {"field", a.field.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.field)},
+        {"field_source", r.field_source},
+        {"field_layout", field_layout},
+        {"singularities_before", singularities_json(r.singularities_before)}};
     if (!r.infeasible.empty()) {
         // Diagnosed before optimizing: no map is written.
         if (!a.report.empty()) {
-            const nlohmann::json report = {
-                {"command", "seamless"},
-                {"mesh", a.mesh},
-                {"faces", mesh.num_simplices()},
-                {"vertices", mesh.num_vertices()},
-                {"field", a.field.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.field)},
-                {"field_source", r.field_source},
-                {"singularities_before", singularities_json(r.singularities_before)},
-                {"infeasible", {{"description", r.infeasible}}},
-                {"success", false},
-                {"message", r.message},
-                {"times", {{"read", read_time}, {"total", total.seconds()}}}};
+            report.update({{"infeasible", {{"description", r.infeasible}}},
+                           {"success", false},
+                           {"message", r.message},
+                           {"times", {{"read", read_time}, {"total", total.seconds()}}}});
             plan.write(a.report, [&](const std::string& path) { write_json(path, report); });
         }
         plan.commit("  " + r.message + (a.report.empty() ? "" : "\n  wrote " + a.report) + "\n");
@@ -194,41 +196,34 @@ int run_seamless_command(const SeamlessArguments& a) {
                                        {"folded_faces", r.repair.folded_faces},
                                        {"description", r.repair.describe()},
                                        {"attempts", r.repair.attempts}};
-        nlohmann::json report = {
-            {"local_repair", repair},
-            {"command", "seamless"},
-            {"mesh", a.mesh},
-            {"faces", mesh.num_simplices()},
-            {"vertices", mesh.num_vertices()},
-            {"field", a.field.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.field)},
-            {"field_source", r.field_source},
-            {"field_layout", field_layout},
-            {"options",
-             {{"scale", r.scale},
-              {"mu", options.integrable.mu},
-              {"assembly_tolerance", options.integrable.assembly_tolerance},
-              {"seam_tolerance", options.seam_tolerance},
-              {"max_iterations", options.integrable.max_iterations},
-              {"max_time_seconds", std::isfinite(options.integrable.max_time_seconds)
-                                       ? nlohmann::json(options.integrable.max_time_seconds)
-                                       : nlohmann::json(nullptr)}}},
-            {"singularities_before", singularities_json(r.singularities_before)},
-            {"singularities_after", singularities_json(r.singularities_after)},
-            {"singularities_kept", r.singularities_kept},
-            {"matchings_kept", r.matchings_kept},
-            {"cut_edges", r.cut_edges},
-            {"curl_before", {{"max", r.curl_stats_before.max}, {"mean", r.curl_stats_before.mean}}},
-            {"curl_after", {{"max", r.curl_stats_after.max}, {"mean", r.curl_stats_after.mean}}},
-            {"integrable",
-             {{"assembled", in.assembled},
-              {"sum_curl_squared", in.assembly},
-              {"termination", to_string(in.newton.termination)},
-              {"iterations", iterations}}},
-            {"plain_poisson", verified_json(r.plain)},
-            {"result", verified_json(r.result)},
-            {"success", r.success},
-            {"message", r.message},
-            {"peak_memory_gb", peak_memory_gb()}};
+        report.update(
+            {{"local_repair", repair},
+             {"options",
+              {{"scale", r.scale},
+               {"mu", options.integrable.mu},
+               {"assembly_tolerance", options.integrable.assembly_tolerance},
+               {"seam_tolerance", options.seam_tolerance},
+               {"max_iterations", options.integrable.max_iterations},
+               {"max_time_seconds", std::isfinite(options.integrable.max_time_seconds)
+                                        ? nlohmann::json(options.integrable.max_time_seconds)
+                                        : nlohmann::json(nullptr)}}},
+             {"singularities_after", singularities_json(r.singularities_after)},
+             {"singularities_kept", r.singularities_kept},
+             {"matchings_kept", r.matchings_kept},
+             {"cut_edges", r.cut_edges},
+             {"curl_before",
+              {{"max", r.curl_stats_before.max}, {"mean", r.curl_stats_before.mean}}},
+             {"curl_after", {{"max", r.curl_stats_after.max}, {"mean", r.curl_stats_after.mean}}},
+             {"integrable",
+              {{"assembled", in.assembled},
+               {"sum_curl_squared", in.assembly},
+               {"termination", to_string(in.newton.termination)},
+               {"iterations", iterations}}},
+             {"plain_poisson", verified_json(r.plain)},
+             {"result", verified_json(r.result)},
+             {"success", r.success},
+             {"message", r.message},
+             {"peak_memory_gb", peak_memory_gb()}});
         nlohmann::json& times = report["times"] = r.times;  // the pipeline's, then the command's
         times["read"] = read_time;
         times["output"] = output_time;
