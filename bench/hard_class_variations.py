@@ -91,7 +91,7 @@ def main():
             status = 'verified' if ok else 'NOT verified by check_map.py (sa said success)'
         rows.append((name, status, wall))
         extra = ''
-        if rep.get('fallback'):
+        if any(s['stage'] == 'fallback' for s in rep.get('stages', [])):
             extra = ' fallback'
         print('%-60s %6s simplices %6s inverted  %-12s %6.2f s  %s%s' % (
             name, rep.get('input', {}).get('simplices'), before, rep.get('mode', '-'), wall, status,

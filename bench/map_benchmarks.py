@@ -157,15 +157,17 @@ def run_case(a, case, variant, work):
         return row
     row['before'] = rep['initial_quality']['inverted']
     row['mode'] = rep.get('mode', 'full')
-    if rep.get('fallback') and 'kept' not in rep['fallback']:
+    stages = {s['stage']: s for s in rep.get('stages', [])}
+    if stages.get('fallback', {}).get('outcome') == 'replaced the result':
         row['mode'] += ', then the untangling fallback'
     stage = rep.get('vertex_stage', {}).get('iterations', 0)
     t = rep['times']
     if row['mode'] == 'submesh':
         m = rep['submesh']
         row['iterations'] = '%d in %d solves + %d' % (m['iterations'], m['solves'], stage)
-        if m.get('start_untangle_iterations'):
-            row['iterations'] = 'untangle %d, ' % m['start_untangle_iterations'] + row['iterations']
+        if 'start untangling' in stages:
+            row['iterations'] = ('untangle %d, ' % stages['start untangling']['newton_steps'] +
+                                 row['iterations'])
         row['submesh'] = '%d rounds, %d solves, largest %d, %d rings' % (
             len(m['rounds']), m['solves'], m['largest_submesh'], m['max_rings'])
         row['stages'] = 'start %.2f, regions %.2f, vertex %.2f' % (

@@ -186,7 +186,8 @@ int run_param_command(const ParamArguments& a) {
                                    {"max_distortion_before", d.max_distortion_before},
                                    {"max_distortion_after", d.max_distortion_after},
                                    {"iterations", d.iterations},
-                                   {"termination", d.termination}});
+                                   {"outcome", to_string(d.outcome)},
+                                   {"undone_degenerate", d.undone_degenerate}});
             }
             fallback["reason"] = r.fallback.reason;
             fallback["starts"] = starts;

@@ -210,10 +210,8 @@ int run_polycube_command(const PolycubeArguments& arguments) {
     report["solve"] = {{"assembled", solve.solve.assembled},
                        {"final_assembly", solve.solve.final_assembly},
                        {"assembly_iterations", solve.solve.newton.num_steps()},
-                       {"assembly_stop", solve.solve.assembly_stop},
-                       {"vertex_stage_ran", solve.solve.vertex_stage_ran},
+                       {"stages", stages_json(solve.solve.stages)},
                        {"vertex_stage_iterations", solve.solve.vertex_stage.num_steps()},
-                       {"vertex_stage_note", solve.solve.vertex_stage_note},
                        {"driver_message", solve.solve.message},
                        {"times", solve_times_json(solve.solve)},
                        {"iterations", assembly_iterations_json(solve.solve)}};

@@ -81,8 +81,8 @@ void start_from_initial_map(PreparedProblem<D>& prepared, const SimplexAssemblyO
         with_time_left(options, budget), observer.logger,
         VertexStageTerms<D>{in.fans, in.constraints, in.plugins, in.plugin_stage,
                             exponent_continuation<D>(prepared)});
-    if (from_initial.ran) {
-        from_initial.note += " (from the initial map: the assembly's recovered mesh was not valid)";
+    if (from_initial.ran()) {
+        from_initial.outcome = VertexStageOutcome::kRanFromInitialMap;
         recovered = from_initial.positions;
         vertex = std::move(from_initial);
         return;
@@ -97,8 +97,7 @@ void start_from_initial_map(PreparedProblem<D>& prepared, const SimplexAssemblyO
     if (q.inverted > 0 || q.degenerate > 0) return;
     recovered = candidate;
     vertex.positions = candidate;
-    vertex.note +=
-        "; the initial map, inversion-free but beyond what the barrier represents, is kept";
+    vertex.outcome = VertexStageOutcome::kInitialMapKept;
 }
 
 /// The whole mesh at once: the engine (its lambda schedule, section 4.4) with the hand-over of
@@ -148,7 +147,7 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
     hooks.logger = observer.logger;
     hooks.after_iteration = [&](const AssemblyRecord& row, const Eigen::VectorXd& x) {
         if (observer.snapshot) observer.snapshot(row.iteration, corners_of(x));
-        if (!options.vertex_stage && !options.until_valid) return std::string();
+        if (!options.vertex_stage && !options.until_valid) return false;
         // Hand over as soon as the mesh recovered from the current A_i is inversion-free and
         // within the bound: one right-hand side and triangular solves of Eq. 6.
         Stopwatch check;
@@ -161,7 +160,7 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
         for (const auto& plugin : in.plugins) {
             if (!plugin->project(positions, stage)) {
                 result.times.recovery += check.seconds();
-                return std::string();
+                return false;
             }
         }
         const double recovered_energy = mesh_energy<D>(prepared, positions);
@@ -170,15 +169,18 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
                             : std::isfinite(recovered_energy) &&
                                   recovered_energy <= options.handover_ratio * row.barrier;
         result.times.recovery += check.seconds();
-        if (!ok) return std::string();
+        if (!ok) return false;
         handover = std::move(positions);
-        return std::string(options.until_valid ? "the recovered map is valid"
-                                               : "the recovered map is handed to the vertex stage");
+        return true;
     };
     AssemblyRun run = engine.run(schedule, hooks);
-    result.assembly_stop_reason = run.stop;
-    if (run.stop == AssemblyStop::kHook || run.stop == AssemblyStop::kConvergedAtLambdaMax)
-        result.assembly_stop = run.message;
+    StageRecord& assembled = result.stages.add(Stage::kAssembly, run.stop);
+    assembled.newton_steps = run.newton.num_steps();
+    assembled.seconds = run.time;
+    if (run.stop == AssemblyStop::kHook) {
+        assembled.figures = options.until_valid ? "the recovered map is valid"
+                                                : "the recovered map is handed to the vertex stage";
+    }
     result.iterations = std::move(run.records);
     result.newton = std::move(run.newton);
     result.final_lambda = run.final_lambda;
@@ -195,7 +197,7 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
     result.times.recovery += stage.lap();
 
     if (options.vertex_stage && !options.until_valid && budget.exhausted()) {
-        result.vertex_stage_note = "skipped: the time limit was reached";
+        result.stages.add(Stage::kVertexStage, VertexStageOutcome::kSkippedTimeLimit);
     } else if (options.vertex_stage && !options.until_valid) {
         // The anchored simplices keep all their vertices: a free part has no rigid motion left.
         // A plugin that fixes the rigid motion itself (PolyCube's planes) frees them.
@@ -214,14 +216,14 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
             observer.logger,
             VertexStageTerms<D>{in.fans, in.constraints, in.plugins, in.plugin_stage,
                                 exponent_continuation<D>(prepared)});
-        if (!vertex.ran)
+        if (!vertex.ran())
             start_from_initial_map<D>(prepared, options, budget, observer, fixed, recovered,
                                       vertex);
-        result.vertex_stage_ran = vertex.ran;
-        result.vertex_stage_note = vertex.note;
         result.vertex_stage = vertex.newton;
         recovered = vertex.positions;
-        result.times.vertex_stage += stage.lap();
+        const double seconds = stage.lap();
+        result.times.vertex_stage += seconds;
+        record_vertex_stage(result.stages, vertex, seconds);
     }
     result.positions = prepared.to_original(recovered);
 }
@@ -321,24 +323,36 @@ SimplexAssemblyResult solve_prepared(PreparedProblem<D>& p, const SimplexAssembl
     if (result.mode == SolveMode::kSubmesh) {
         message << result.submesh.describe();
     } else {
+        const StageRecord* assembly = result.stages.last(Stage::kAssembly);
         if (result.assembled) {
             message << "Assembled (E~ = " << result.final_assembly << ") after "
                     << result.newton.num_steps() << " iterations";
-        } else {
+        } else if (assembly != nullptr) {
             message << "Not assembled: E~ = " << result.final_assembly << " after "
                     << result.newton.num_steps() << " iterations ("
-                    << (result.assembly_stop.empty() ? to_string(result.newton.termination)
-                                                     : result.assembly_stop)
+                    << (assembly->figures.empty() ? to_string(assembly->outcome)
+                                                  : assembly->figures)
                     << ")";
         }
-        if (result.vertex_stage_ran) {
-            message << ", then " << result.vertex_stage.num_steps() << " in vertex variables ("
+    }
+    // The vertex stage of the driver's own mode; the fallback's comes after it.
+    for (const StageRecord& r : result.stages.records) {
+        if (r.stage == Stage::kFallback) {
+            message << ". Then the fallback untangled in vertex variables: "
+                    << to_string(r.outcome);
+            if (!r.figures.empty()) message << " (" << r.figures << ")";
+            break;
+        }
+        if (r.stage != Stage::kVertexStage) continue;
+        const VertexStageOutcome v = std::get<VertexStageOutcome>(r.outcome);
+        if (newton_ran(v)) {
+            message << ", then " << r.newton_steps << " in vertex variables ("
                     << to_string(result.vertex_stage.termination) << ")";
-        } else if (options.vertex_stage && !options.until_valid) {
-            message << "; vertex stage " << result.vertex_stage_note;
+            if (v != VertexStageOutcome::kRan) message << "; " << to_string(v);
+        } else {
+            message << "; vertex stage " << to_string(v);
         }
     }
-    if (!result.fallback.empty()) message << ". Then " << result.fallback;
     message << ".";
     result.message = message.str();
     result.times.verification += stage.lap();

@@ -30,6 +30,7 @@
 #include "frontends/simplex_assembly/assembly_plugin.h"
 #include "frontends/simplex_assembly/engine_options.h"
 #include "frontends/simplex_assembly/simplex_term.h"
+#include "frontends/simplex_assembly/stage_trace.h"
 #include "geometry/map_quality.h"
 #include "geometry/simplicial_mesh.h"
 #include "optim/logger.h"
@@ -141,11 +142,7 @@ struct SubmeshStats {
     std::string start;         ///< which iterate of the start ("initial map", "M^0 (Eq. 6)", ...)
     int start_iterations = 0;  ///< local/global iterations run after M^0
     int start_rejected = 0;    ///< accelerated points among them replaced by plain steps
-    /// Newton steps of the untangling after them (untangle.h; 0 when it did not run) and how it
-    /// ended.
-    int start_untangle_iterations = 0;
-    std::string start_untangle;
-    Index start_bad = 0;  ///< bad simplices of the start
+    Index start_bad = 0;       ///< bad simplices of the start
     /// Simplices of the start within options.submesh_band of their bound (and not bad), whose
     /// regions the first round also solves.
     Index start_near_bound = 0;
@@ -173,18 +170,10 @@ struct SimplexAssemblyResult {
     MapQuality initial_quality;  ///< of the initial map
     MapQuality final_quality;    ///< of the output positions
     NewtonSummary newton;        ///< the assembly stage
-    /// Why the assembly stage stopped (the engine's reason; full mode).
-    AssemblyStop assembly_stop_reason = AssemblyStop::kMaxIterations;
-    /// Why the assembly stage stopped early, when it did (empty otherwise): the recovered map
-    /// was valid (until_valid) or good enough to hand over, or E stopped changing at lambda_max.
-    std::string assembly_stop;
     std::vector<AssemblyRecord> iterations;
-    bool vertex_stage_ran = false;  ///< the vertex stage ran
-    std::string vertex_stage_note;  ///< how it ended, or why it did not run
-    NewtonSummary vertex_stage;     ///< the vertex stage (empty when it did not run)
-    /// What the last resort did when the run ended without a valid map (untangle_fallback.h;
-    /// empty when it did not run).
-    std::string fallback;
+    NewtonSummary vertex_stage;  ///< the vertex stage (empty when it did not run)
+    /// The stages the run passed, in order, each with its typed outcome (stage_trace.h).
+    StageTrace stages;
     StageTimes times;
     Index num_variables = 0;
     Index num_translation_simplices = 0;  ///< |Omega_s| for r-SA, N for f-SA

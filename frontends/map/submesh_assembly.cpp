@@ -163,8 +163,10 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
     stats.start = start.description;
     stats.start_iterations = start.iterations;
     stats.start_rejected = start.rejected;
-    stats.start_untangle_iterations = start.untangle_iterations;
-    stats.start_untangle = start.untangle_note;
+    if (start.untangle) {
+        StageRecord& r = result.stages.add(Stage::kStartUntangle, *start.untangle);
+        r.newton_steps = start.untangle_iterations;
+    }
     stats.start_bad = static_cast<Index>(bad.size());
     Index near_bound = 0;
     if (options.submesh_band > 0.0) {
@@ -333,9 +335,9 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
     // section 4.4). It lowers the distortion there and never leaves the valid set.
     const bool any_repaired = std::find(repaired.begin(), repaired.end(), 1) != repaired.end();
     if (options.vertex_stage && !options.until_valid && bad.empty() && !any_repaired) {
-        result.vertex_stage_note = "skipped: the initial map was valid and nothing moved";
+        result.stages.add(Stage::kVertexStage, VertexStageOutcome::kSkippedNothingMoved);
     } else if (options.vertex_stage && !options.until_valid && bad.empty() && budget.exhausted()) {
-        result.vertex_stage_note = "skipped: the time limit was reached";
+        result.stages.add(Stage::kVertexStage, VertexStageOutcome::kSkippedTimeLimit);
     } else if (options.vertex_stage && !options.until_valid && bad.empty()) {
         Stopwatch vertex_watch;
         std::vector<unsigned char> fixed(p.mesh.num_vertices(), 0);
@@ -389,14 +391,13 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
             observer.logger,
             VertexStageTerms<D>{
                 {}, constraints, {}, {}, exponent_continuation<D>(p, sub.simplices)});
-        result.vertex_stage_ran = vertex.ran;
-        result.vertex_stage_note = vertex.note;
         result.vertex_stage = vertex.newton;
         // The fixed vertices keep their positions exactly (no round trip through normalization).
         const Eigen::MatrixXd moved = p.to_original(vertex.positions);
         for (Index i = 0; i < nv; ++i)
             if (!local_fixed[i]) positions.row(sub.vertices[i]) = moved.row(i);
         result.times.vertex_stage += vertex_watch.seconds();
+        record_vertex_stage(result.stages, vertex, vertex_watch.seconds());
     }
     result.positions = positions;
 }

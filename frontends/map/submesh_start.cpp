@@ -42,7 +42,7 @@ void untangle_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& options
     const Eigen::MatrixXd from = (start.positions.rowwise() - p.map_center) * p.scale;
     const UntangleResult u = untangle_prepared<D>(p, options, budget, from, logger);
     start.untangle_iterations = u.iterations;
-    start.untangle_note = u.note;
+    start.untangle = u.outcome;
     // Simplices beyond the barrier's exponent cap are not bad here: what the untangling left
     // there, which minimized its own distortion, is mostly what the handles force (on
     // tlc/armadillo-598, 81 simplices with a free vertex, next to 83 whose vertices are all

@@ -68,32 +68,34 @@ bool untangle_fallback(PreparedProblem<D>& p, const SimplexAssemblyOptions& opti
     const UntangleResult u =
         untangle_prepared<D>(p, options, budget, from_result ? reached : initial, observer.logger);
     Eigen::MatrixXd positions = u.positions;
-    std::string note = "untangled in vertex variables (" + std::to_string(u.iterations) +
-                       " Newton steps, " + u.note + ")";
     const Index after = invalid_simplices<D>(p, positions);
+    StageRecord& record = result.stages.add(
+        Stage::kFallback, after < before ? FallbackOutcome::kReplaced : FallbackOutcome::kNoBetter);
+    record.newton_steps = u.iterations;
+    record.figures = "from the " + std::string(from_result ? "result" : "initial map") + ", " +
+                     std::to_string(u.iterations) + " Newton steps, " + to_string(u.outcome) +
+                     ", " + std::to_string(after) + " bad simplices against " +
+                     std::to_string(before);
     if (after >= before) {
-        result.fallback = note + ": no better than the result, which is kept";
+        record.seconds = watch.seconds();
         return false;
     }
-    result.times.optimization += watch.lap();
+    record.seconds = watch.lap();
+    result.times.optimization += record.seconds;
     if (u.untangled && options.vertex_stage && !options.until_valid && !budget.exhausted()) {
         const VertexStage vertex = run_vertex_stage<D>(
             p.mesh, p.frames, p.assembly.energies, positions, fixed_vertices<D>(p),
             with_time_left(options, budget), observer.logger,
             VertexStageTerms<D>{{}, p.assembly.constraints, {}, {}, exponent_continuation<D>(p)});
-        if (vertex.ran) {
+        if (vertex.ran()) {
             positions = vertex.positions;
-            result.vertex_stage_ran = true;
             result.vertex_stage = vertex.newton;
         }
-        result.vertex_stage_note = vertex.note;
-        note += vertex.ran
-                    ? ", then " + std::to_string(vertex.newton.num_steps()) + " in the vertex stage"
-                    : "; vertex stage " + vertex.note;
-        result.times.vertex_stage += watch.lap();
+        const double seconds = watch.lap();
+        result.times.vertex_stage += seconds;
+        record_vertex_stage(result.stages, vertex, seconds);
     }
     result.positions = p.to_original(positions);
-    result.fallback = note;
     return true;
 }
 

@@ -92,22 +92,22 @@ VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOp
             prepared.mesh, prepared.frames, {simplex_term<D>("simplex energy", energy)}, x, fixed,
             o, observer.logger, VertexStageTerms<D>{prepared.assembly.fans, {}});
         round.iterations = v.newton.num_steps();
-        round.termination = v.note;
-        if (v.ran) {
+        round.outcome = v.outcome;
+        if (v.ran()) {
             const Index before = degenerate(x);
             const Index after = before == 0 ? degenerate(v.positions) : 0;
             if (after > 0) {
                 undone = true;
-                round.termination += "; undone: it left " + std::to_string(after) +
-                                     " degenerate simplices, its start none";
-                log_line(observer.logger, "vertex descent: " + round.termination);
+                round.undone_degenerate = after;
+                log_line(observer.logger, "vertex descent: round undone: it left " +
+                                              std::to_string(after) +
+                                              " degenerate simplices, its start none");
             } else {
                 x = std::move(v.positions);
             }
         }
         round.max_distortion_after = largest_distortion(x);
-        result.vertex_stage_ran = result.vertex_stage_ran || v.ran;
-        result.vertex_stage_note = v.note;
+        record_vertex_stage(result.stages, v, v.newton.times.total);
         result.vertex_stage = std::move(v.newton);
         out.rounds.push_back(round);
         return round.max_distortion_after;
@@ -165,8 +165,14 @@ VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOp
                 << " round" << (out.rounds.size() == 1 ? "" : "s") << ", " << steps
                 << " iterations";
         if (!out.rounds.empty()) {
-            message << ", s " << out.rounds.front().s << " to " << out.rounds.back().s << " ("
-                    << out.rounds.back().termination << ")";
+            const DescentRound& last = out.rounds.back();
+            message << ", s " << out.rounds.front().s << " to " << last.s << " ("
+                    << (newton_ran(last.outcome) ? to_string(result.vertex_stage.termination)
+                                                 : to_string(last.outcome));
+            if (last.undone_degenerate > 0)
+                message << "; undone: it left " << last.undone_degenerate
+                        << " degenerate simplices, its start none";
+            message << ")";
         }
         if (!result.verification.within_bound()) {
             message << "; the bound " << options.bound << " was not reached (largest distortion "

@@ -38,7 +38,9 @@ struct DescentRound {
     double max_distortion_before = 0;  ///< d_max at the round's start (the barrier's measure)
     double max_distortion_after = 0;
     int iterations = 0;
-    std::string termination;
+    VertexStageOutcome outcome = VertexStageOutcome::kRan;
+    /// Its result had degenerate simplices, its start none: the round was undone (above).
+    Index undone_degenerate = 0;
 };
 
 struct VertexDescentResult {

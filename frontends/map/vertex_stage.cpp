@@ -36,7 +36,8 @@ VertexStage run_once(const SimplicialMesh& mesh, const RestFrames<D>& frames,
         // The plugin's constraint set first (PolyCube: every chart on its plane).
         if (!plugin->project(result.positions, stage)) {
             result.positions = start;
-            result.note = "skipped: " + plugin->name() + " cannot project the start";
+            result.outcome = VertexStageOutcome::kSkippedPluginCannotProject;
+            result.figures = plugin->name() + " cannot project the start";
             return result;
         }
     }
@@ -102,11 +103,7 @@ VertexStage run_once(const SimplicialMesh& mesh, const RestFrames<D>& frames,
         if (fixed[v]) engine.fix_vertex(v);
     if (!std::isfinite(engine.problem().value())) {
         result.positions = start;
-        result.note = terms.plugins.empty()
-                          ? "skipped: the recovered mesh has an inverted simplex or one over the "
-                            "bound"
-                          : "skipped: the recovered mesh (projected by the plugins) has an "
-                            "inverted simplex, one over the bound, or a plugin barrier at +inf";
+        result.outcome = VertexStageOutcome::kSkippedInfeasibleStart;
         return result;
     }
     // A simplex whose e^{s d} is beyond the barrier's exponent cap (barrier.h; e^500) makes every
@@ -127,16 +124,15 @@ VertexStage run_once(const SimplicialMesh& mesh, const RestFrames<D>& frames,
         }
     }
     if (beyond_cap > 0) {
-        result.note = "skipped: " + std::to_string(beyond_cap) +
-                      " simplices are so distorted that the barrier cannot rank the others";
+        result.outcome = VertexStageOutcome::kSkippedBeyondExponentCap;
+        result.figures = std::to_string(beyond_cap) + " simplices beyond the exponent cap";
         result.positions = start;
         return result;
     }
     AssemblyRun run = engine.run(options, {.logger = logger, .after_iteration = {}});
     result.newton = std::move(run.newton);
     result.stop = run.stop;
-    result.ran = true;
-    result.note = to_string(result.newton.termination);
+    result.outcome = VertexStageOutcome::kRan;
     result.positions.leftCols(D) = engine.positions(engine.problem().variables());
     return result;
 }
@@ -228,6 +224,7 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
     };
     const TimeBudget budget(options.max_time_seconds);
     VertexStage result;
+    result.outcome = VertexStageOutcome::kSkippedTimeLimit;  // until a round runs
     result.positions = start;
     double best = energy_at_s(start);
     Eigen::MatrixXd x = start;
@@ -256,8 +253,8 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
         steps += v.newton.num_steps();
         if (s_first < 0.0) s_first = s;
         s_last = s;
-        if (v.ran) {
-            result.ran = true;
+        if (v.ran()) {
+            result.outcome = VertexStageOutcome::kRan;
             result.stop = v.stop;
             // One summary for the stage: every round's steps, the first round's start.
             if (result.newton.iterations.empty()) {
@@ -275,7 +272,6 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
                 result.newton.initial_energy = initial;
                 result.newton.times += times;
             }
-            result.note = v.note;
             x = v.positions;
             const double e = energy_at_s(x);
             if (e < best) {
@@ -283,10 +279,11 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
                 result.positions = x;
                 improved = true;
             }
-        } else if (result.note.empty()) {
-            result.note = v.note;
+        } else if (!result.ran()) {
+            result.outcome = v.outcome;
+            result.figures = v.figures;
         }
-        if (last_round || !v.ran) break;
+        if (last_round || !v.ran()) break;
         const Range after = distortion_range(x);
         const bool stalled = !(after.spread() < (1.0 - kStall) * d.spread());
         d = after;
@@ -301,13 +298,21 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
     if (rounds > 0) {
         char line[200];
         std::snprintf(line, sizeof line,
-                      " (exponent continuation: %d rounds, s %.3g to %.3g, largest distortion "
-                      "%.4g to %.4g)",
+                      "exponent continuation: %d rounds, s %.3g to %.3g, largest distortion "
+                      "%.4g to %.4g",
                       rounds, s_first, s_last, d_start, distortion_range(result.positions).largest);
-        result.note += line;
-        if (result.ran && !improved) result.note += "; the start is kept (no lower energy at s)";
+        result.continuation_rounds = rounds;
+        result.figures = result.figures.empty() ? line : result.figures + "; " + line;
+        if (result.ran() && !improved) result.outcome = VertexStageOutcome::kRanStartKept;
     }
     return result;
+}
+
+void record_vertex_stage(StageTrace& trace, const VertexStage& stage, double seconds) {
+    StageRecord& r = trace.add(Stage::kVertexStage, stage.outcome);
+    r.newton_steps = stage.ran() ? stage.newton.num_steps() : 0;
+    r.seconds = seconds;
+    r.figures = stage.figures;
 }
 
 template ExponentContinuation<2> exponent_continuation<2>(const PreparedProblem<2>&,

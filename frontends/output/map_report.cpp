@@ -8,8 +8,7 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FixedBoundaryPart, dimension, simplices, firs
                                    encloses_volume, turning_measured, turning, euler)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SubmeshRound, round, bad_simplices, regions, colors, solved,
                                    failed, remaining, time)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SubmeshStats, start, start_iterations, start_rejected,
-                                   start_untangle_iterations, start_untangle, start_bad,
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SubmeshStats, start, start_iterations, start_rejected, start_bad,
                                    start_near_bound, rounds, solves, iterations, largest_submesh,
                                    max_rings, out_of_time)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(StageTimes, setup, disassembly, optimization, recovery,
@@ -31,6 +30,19 @@ nlohmann::json quality_json(const MapQuality& q) {
     return {{"simplices", q.simplices},       {"inverted", q.inverted},
             {"degenerate", q.degenerate},     {"conformal", stat(q.conformal)},
             {"isometric", stat(q.isometric)}, {"volumetric", stat(q.volumetric)}};
+}
+
+nlohmann::json stages_json(const StageTrace& stages) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const StageRecord& r : stages.records) {
+        nlohmann::json record = {{"stage", to_string(r.stage)},
+                                 {"outcome", to_string(r.outcome)},
+                                 {"newton_steps", r.newton_steps},
+                                 {"seconds", r.seconds}};
+        if (!r.figures.empty()) record["figures"] = r.figures;
+        out.push_back(std::move(record));
+    }
+    return out;
 }
 
 namespace {
@@ -163,15 +175,13 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
                           {"homology_loops", r.num_loops},
                           {"anchored_simplices", r.num_anchored_simplices},
                           {"newton_termination", to_string(r.newton.termination)},
-                          {"stopped_because", r.assembly_stop},
                           {"newton_message", r.newton.message}};
-    report["vertex_stage"] = {{"ran", r.vertex_stage_ran},
-                              {"note", r.vertex_stage_note},
+    report["stages"] = stages_json(r.stages);
+    report["vertex_stage"] = {{"ran", r.stages.vertex_stage_ran()},
                               {"iterations", r.vertex_stage.num_steps()},
                               {"initial_energy", r.vertex_stage.initial_energy},
                               {"final_energy", r.vertex_stage.final_energy},
                               {"termination", to_string(r.vertex_stage.termination)}};
-    report["fallback"] = r.fallback;
     report["iterations"] = assembly_iterations_json(r);
     report["times"] = solve_times_json(r);
     return report;

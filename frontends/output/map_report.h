@@ -15,6 +15,10 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
 
 nlohmann::json quality_json(const MapQuality& quality);
 
+/// The stages a run passed, in order: [{stage, outcome, newton_steps, seconds, figures}], the
+/// enums by their names (stage_trace.h).
+nlohmann::json stages_json(const StageTrace& stages);
+
 /// One row per assembly iteration of `result`: energy, E~_assembly, lambda, time, and from the
 /// first step on Newton's step length, line-search trials, gradient norm, decrement, the
 /// regularization tau its factorization needed, and the iteration's and factorization's seconds.

@@ -175,7 +175,7 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
         u.accept = [&](const Eigen::MatrixXd& x) { return std::isfinite(energy(x, stage)); };
         const UntangleResult r = untangle<3>(mesh, frames, positions, fixed, u);
         // untangle() checks the tetrahedra with a free vertex only.
-        std::string note = r.untangled ? "" : r.note;
+        std::string note = r.untangled ? "" : to_string(r.outcome) + ": " + to_string(r.stop);
         if (note.empty()) {
             const MapQuality q =
                 map_quality<3>(linear_parts<3>(mesh, frames, r.positions), frames.volume);

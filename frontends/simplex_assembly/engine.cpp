@@ -464,10 +464,8 @@ AssemblyRun SimplexAssemblyEngine<D>::run(const AssemblyEngineOptions& options,
             log_line(hooks.logger, line);
         }
         if (hooks.after_iteration) {
-            std::string reason = hooks.after_iteration(row, c.problem.variables());
-            if (!reason.empty()) {
+            if (hooks.after_iteration(row, c.problem.variables())) {
                 result.stop = AssemblyStop::kHook;
-                result.message = std::move(reason);
                 stopped = true;
                 return CallbackResult::kStopSuccess;
             }
@@ -482,8 +480,6 @@ AssemblyRun SimplexAssemblyEngine<D>::run(const AssemblyEngineOptions& options,
             if (c.record.energy_change <= options.energy_tolerance * std::abs(before)) {
                 result.stop =
                     assembled ? AssemblyStop::kAssembled : AssemblyStop::kConvergedAtLambdaMax;
-                result.message =
-                    assembled ? "assembled and E converged" : "E converged at lambda_max";
                 stopped = true;
                 return CallbackResult::kStopSuccess;
             }
@@ -522,7 +518,6 @@ AssemblyRun SimplexAssemblyEngine<D>::run(const AssemblyEngineOptions& options,
                 result.stop = AssemblyStop::kNonFinite;
                 break;
         }
-        result.message = result.newton.message;
     }
     result.final_lambda = schedule ? lambda : 0.0;
     result.final_assembly = last_assembly;

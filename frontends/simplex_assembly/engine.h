@@ -81,15 +81,14 @@ namespace sa {
 struct AssemblyHooks {
     /// Receives a header and one progress row per iteration.
     Logger logger;
-    /// Called after every iteration (record 0: the start) with the current variables; a
-    /// non-empty return value stops the run there (AssemblyStop::kHook, the text as its reason):
-    /// the mesh driver's hand-over once the mesh recovered by Eq. 6 is good enough.
-    std::function<std::string(const AssemblyRecord&, const Eigen::VectorXd& x)> after_iteration;
+    /// Called after every iteration (record 0: the start) with the current variables; true stops
+    /// the run there (AssemblyStop::kHook): the mesh driver's hand-over once the mesh recovered
+    /// by Eq. 6 is good enough.
+    std::function<bool(const AssemblyRecord&, const Eigen::VectorXd& x)> after_iteration;
 };
 
 struct AssemblyRun {
     AssemblyStop stop = AssemblyStop::kMaxIterations;
-    std::string message;                  ///< why it stopped, in a sentence
     bool assembled = false;               ///< E~_assembly < assembly_tolerance at the end
     double final_assembly = 0.0;          ///< E~_assembly at the last iterate
     double final_lambda = 0.0;            ///< lambda of the last iteration

@@ -30,7 +30,7 @@ enum class AssemblyStop {
     kAssembled,             ///< E~ < assembly_tolerance and E stopped changing (the paper's test)
     kConvergedAtLambdaMax,  ///< lambda at lambda_max and E stopped changing, not assembled
     kConverged,             ///< no assembly terms: E stopped changing (Newton's own tests)
-    kHook,                  ///< the front-end's hook stopped it (its reason is the message)
+    kHook,                  ///< the front-end's hook stopped it (AssemblyHooks::after_iteration)
     kNoFreeVariables,       ///< every variable is fixed
     kMaxIterations,
     kMaxTime,

@@ -114,7 +114,7 @@ UntangleResult untangle(const SimplicialMesh& mesh, const RestFrames<D>& frames,
         return options.until_valid && (!options.accept || options.accept(positions_of(at)));
     };
     if (m == 0 || (result.untangled && accepted(x))) {
-        result.note = m == 0 ? "no simplex has a free vertex" : "the start is untangled";
+        result.outcome = m == 0 ? UntangleOutcome::kNothingFree : UntangleOutcome::kStartUntangled;
         return result;
     }
     // Garanzha et al. start from eps = 1 on a mesh scaled so that det A is about 1 where the map
@@ -135,9 +135,8 @@ UntangleResult untangle(const SimplicialMesh& mesh, const RestFrames<D>& frames,
     run_options.num_threads = options.num_threads;
     AssemblyHooks hooks;  // no logger: the rows below say more than the engine's
     log_line(logger, "untangle   energy    eps        min det    inverted  step      time");
-    hooks.after_iteration = [&](const AssemblyRecord& record,
-                                const Eigen::VectorXd& at) -> std::string {
-        if (record.iteration == 0) return {};
+    hooks.after_iteration = [&](const AssemblyRecord& record, const Eigen::VectorXd& at) {
+        if (record.iteration == 0) return false;
         stats = determinants(at);
         const double eps = parameters->epsilon;
         char line[160];
@@ -149,22 +148,22 @@ UntangleResult untangle(const SimplicialMesh& mesh, const RestFrames<D>& frames,
         const double before = energy + record.energy_change;  // at the same eps
         if (stats.nonpositive == 0) {
             best_valid = at;
-            if (accepted(at)) return "untangled";
+            if (accepted(at)) return true;
             if (eps <= kFinalEpsilon &&
                 record.energy_change <= options.energy_tolerance * std::abs(energy)) {
                 converged = true;
-                return "untangled, converged";
+                return true;
             }
         }
         // Lower eps only after a full Newton step: a damped one says that Newton is not yet in
         // its local regime for this eps (Garanzha et al. lower it after an inner solve to
         // convergence). Without this rule a faster schedule stalled (BENCHMARKS.md).
-        if (record.step < 1.0) return {};
+        if (record.step < 1.0) return false;
         const double sigma = std::max(1.0 - energy / before, kMinimumDecrease);
         const double mu = (1.0 - sigma) * regularized_determinant(stats.min, eps).value;
         parameters->epsilon =
             stats.min < mu ? 2.0 * std::sqrt(mu * (mu - stats.min)) : kFinalEpsilon;
-        return {};
+        return false;
     };
     AssemblyRun run = engine.run(run_options, hooks);
     result.newton = std::move(run.newton);
@@ -177,15 +176,20 @@ UntangleResult untangle(const SimplicialMesh& mesh, const RestFrames<D>& frames,
     result.inverted = stats.nonpositive;
     result.untangled = stats.nonpositive == 0;
     result.positions = positions_of(final_x);
-    result.note = result.untangled ? (converged ? "untangled, converged" : "untangled")
-                                   : "not untangled: " + to_string(run.stop);
+    result.stop = run.stop;
+    result.outcome = !result.untangled ? UntangleOutcome::kNotUntangled
+                     : converged       ? UntangleOutcome::kUntangledConverged
+                                       : UntangleOutcome::kUntangled;
+    const std::string how = result.untangled
+                                ? to_string(result.outcome)
+                                : to_string(result.outcome) + ": " + to_string(run.stop);
     const PhaseTimes& t = result.newton.times;
     char line[320];
     std::snprintf(line, sizeof line,
                   "untangling: %s after %d steps, %.2f s (evaluate %.2f, project %.2f, assemble "
                   "%.2f, factorize %.2f, solve %.2f, line search %.2f, checks %.2f)",
-                  result.note.c_str(), result.iterations, t.total, t.evaluate, t.project,
-                  t.assemble, t.factorize, t.solve, t.line_search, t.callbacks);
+                  how.c_str(), result.iterations, t.total, t.evaluate, t.project, t.assemble,
+                  t.factorize, t.solve, t.line_search, t.callbacks);
     log_line(logger, line);
     return result;
 }

@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "frontends/simplex_assembly/stage_trace.h"
 #include "geometry/rest_frames.h"
 #include "optim/hessian_projection.h"
 #include "optim/linear_solver.h"
@@ -66,7 +67,8 @@ struct UntangleResult {
     double min_det = 0.0;       ///< smallest det A over those simplices
     double epsilon = 0.0;       ///< eps at the end
     int iterations = 0;         ///< Newton steps
-    std::string note;           ///< how it ended
+    UntangleOutcome outcome = UntangleOutcome::kNothingFree;
+    AssemblyStop stop = AssemblyStop::kConverged;  ///< the engine's reason, when Newton ran
     NewtonSummary newton;
 };
 

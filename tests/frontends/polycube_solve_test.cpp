@@ -90,7 +90,8 @@ TEST(PolycubeSolve, TheDriverCallsAPluginInEveryStageAndItsConstraintHoldsExactl
     p.plugins.push_back(plugin);
     const SimplexAssemblyResult r = run_simplex_assembly(p, SimplexAssemblyOptions{});
     ASSERT_TRUE(r.success) << r.message;
-    EXPECT_TRUE(r.vertex_stage_ran) << r.vertex_stage_note;
+    EXPECT_EQ(r.stages.outcome<VertexStageOutcome>(Stage::kVertexStage), VertexStageOutcome::kRan)
+        << r.message;
     EXPECT_EQ(plugin->assembly_calls.load(), 1);
     EXPECT_GE(plugin->vertex_calls.load(), 1);
     double lo = kInfinity, hi = -kInfinity;

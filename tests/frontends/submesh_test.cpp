@@ -110,7 +110,7 @@ TEST(SubmeshMode, TheStartSpreadsALargeHandleRotation) {
     EXPECT_NE(a.submesh.start.find("from the handles' rotations"), std::string::npos)
         << a.submesh.start;
     EXPECT_EQ(a.submesh.solves, 0);
-    EXPECT_TRUE(a.vertex_stage_ran) << a.vertex_stage_note;  // the start moved every vertex
+    EXPECT_TRUE(a.stages.vertex_stage_ran()) << a.message;  // the start moved every vertex
 
     options.num_threads = 2;
     const SimplexAssemblyResult b = run_simplex_assembly(p, options);
@@ -123,7 +123,7 @@ TEST(SubmeshMode, TheStartSpreadsALargeHandleRotation) {
     const SimplexAssemblyResult c = run_simplex_assembly(p, options);
     ASSERT_TRUE(c.success) << c.message;
     EXPECT_LE(c.submesh.start_iterations, a.submesh.start_iterations);
-    EXPECT_FALSE(c.vertex_stage_ran);
+    EXPECT_EQ(c.stages.last(Stage::kVertexStage), nullptr);
 
     // Small regions: once the handles' rotations are taken, the iterations run from them all the
     // same, and leave nothing to repair.
@@ -182,7 +182,9 @@ TEST(TimeLimit, StopsTheFullSolveAndTheSummarySaysSo) {
     const SimplexAssemblyResult r = run_simplex_assembly(p, options);
     EXPECT_EQ(r.newton.termination, TerminationType::kMaxTime);
     EXPECT_EQ(r.newton.num_steps(), 0);  // the setup used the time: no step is started
-    EXPECT_FALSE(r.vertex_stage_ran);
+    EXPECT_EQ(r.stages.outcome<AssemblyStop>(Stage::kAssembly), AssemblyStop::kMaxTime);
+    EXPECT_EQ(r.stages.outcome<VertexStageOutcome>(Stage::kVertexStage),
+              VertexStageOutcome::kSkippedTimeLimit);
     EXPECT_GT(r.verification.inverted, 0);
     EXPECT_FALSE(r.success);
     EXPECT_EQ(r.message.rfind("FAILED: ", 0), 0u) << r.message;

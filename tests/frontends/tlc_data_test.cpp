@@ -47,7 +47,8 @@ TEST(TlcFullSolve, StopsAtLambdaMaxWhenEConverges) {
     const SimplexAssemblyResult r = run_simplex_assembly(read_tlc(path), options);
     EXPECT_TRUE(r.success) << r.message;
     EXPECT_FALSE(r.assembled);
-    EXPECT_EQ(r.assembly_stop, "E converged at lambda_max") << r.message;
+    EXPECT_EQ(r.stages.outcome<AssemblyStop>(Stage::kAssembly), AssemblyStop::kConvergedAtLambdaMax)
+        << r.message;
     EXPECT_EQ(r.final_lambda, options.lambda_max);
     EXPECT_LT(r.newton.num_steps(), 60);
 }

@@ -37,7 +37,7 @@ TEST(Untangle, UntanglesAGeneratedFixedBoundaryProblem) {
         UntangleOptions options;
         options.until_valid = until_valid;
         const UntangleResult r = untangle<3>(g.rest, frames, g.initial, fixed, options);
-        EXPECT_TRUE(r.untangled) << r.note;
+        EXPECT_TRUE(r.untangled) << to_string(r.outcome);
         EXPECT_GT(r.min_det, 0.0);
         // Verified from the positions, independently of the untangler's own count.
         const MapQuality q = quality(g.rest, r.positions);
@@ -60,7 +60,7 @@ TEST(Untangle, FixedCoordinatesKeepTheirValues) {
     options.fixed_coordinates.assign(3 * g.rest.num_vertices(), 0);
     for (Index h : g.handles) options.fixed_coordinates[3 * h + 2] = 1;
     const UntangleResult r = untangle<3>(g.rest, frames, g.initial, fixed, options);
-    EXPECT_TRUE(r.untangled) << r.note;
+    EXPECT_TRUE(r.untangled) << to_string(r.outcome);
     const MapQuality q = quality(g.rest, r.positions);
     EXPECT_EQ(q.inverted + q.degenerate, 0);
     double moved = 0.0;
@@ -101,7 +101,7 @@ TEST(Untangle, SharedCoordinatesMoveAsOne) {
     for (Index h : g.handles)
         if (g.rest.vertices(h, 2) == top) start(h, 2) += 0.3;  // the plane moved up
     const UntangleResult r = untangle<3>(g.rest, frames, start, fixed, options);
-    EXPECT_TRUE(r.untangled) << r.note;
+    EXPECT_TRUE(r.untangled) << to_string(r.outcome);
     const MapQuality q = quality(g.rest, r.positions);
     EXPECT_EQ(q.inverted + q.degenerate, 0);
     for (Index h : g.handles) {
@@ -195,7 +195,10 @@ TEST(HardFixedBoundaryClass, AutoUntanglesAWidespreadTangleInsideAFixedBoundary)
 }
 
 // A full solve that cannot assemble (--mode full on the class) ends verified through the
-// fallback, which says so.
+// fallback, and its trace says which stages ran, in order: the assembly to its iteration limit,
+// the vertex stage (skipped: the recovered mesh is tangled), the fallback, which replaced the
+// result, and its vertex stage, skipped: the twist forces simplices whose vertices are all
+// handles beyond the barrier's exponent cap.
 TEST(HardFixedBoundaryClass, FullModeFallsBackToUntangling) {
     const GeneratedProblem g = fixed_boundary_problem(
         grid_tetrahedra(3, 3, 6), GeneratedDeformation::kTwist, 1.5, 1.0, 2, 0.02);
@@ -205,7 +208,22 @@ TEST(HardFixedBoundaryClass, FullModeFallsBackToUntangling) {
     const SimplexAssemblyResult r = run_simplex_assembly(mapping_problem(g), options);
     EXPECT_TRUE(r.success) << r.message;
     EXPECT_EQ(quality(g.rest, r.positions).inverted, 0);
-    EXPECT_FALSE(r.fallback.empty()) << r.message;
+    std::vector<Stage> stages;
+    for (const StageRecord& record : r.stages.records) stages.push_back(record.stage);
+    ASSERT_EQ(stages, (std::vector<Stage>{Stage::kAssembly, Stage::kVertexStage, Stage::kFallback,
+                                          Stage::kVertexStage}))
+        << r.message;
+    const std::vector<StageRecord>& records = r.stages.records;
+    EXPECT_EQ(std::get<AssemblyStop>(records[0].outcome), AssemblyStop::kMaxIterations);
+    EXPECT_EQ(records[0].newton_steps, options.max_iterations);
+    EXPECT_FALSE(newton_ran(std::get<VertexStageOutcome>(records[1].outcome)))
+        << to_string(records[1].outcome);
+    EXPECT_EQ(std::get<FallbackOutcome>(records[2].outcome), FallbackOutcome::kReplaced);
+    EXPECT_GT(records[2].newton_steps, 0);
+    EXPECT_EQ(std::get<VertexStageOutcome>(records[3].outcome),
+              VertexStageOutcome::kSkippedBeyondExponentCap)
+        << to_string(records[3].outcome);
+    EXPECT_FALSE(r.stages.vertex_stage_ran());
 }
 
 }  // namespace

@@ -54,7 +54,8 @@ TEST_P(Variants, EachVariantAssemblesOnThePapersSchedule) {
     EXPECT_TRUE(r.success) << to_string(GetParam()) << ": " << r.message;
     EXPECT_TRUE(r.assembled) << r.message;
     EXPECT_LT(r.final_assembly, options.assembly_tolerance);
-    EXPECT_FALSE(r.vertex_stage_ran);
+    EXPECT_EQ(r.stages.last(Stage::kVertexStage), nullptr);  // not asked for
+    EXPECT_EQ(r.stages.outcome<AssemblyStop>(Stage::kAssembly), AssemblyStop::kAssembled);
 }
 
 INSTANTIATE_TEST_SUITE_P(AllVariants, Variants,

@@ -54,7 +54,7 @@ TEST(VertexStageContinuation, LowersTheDistortionOfAnUntangledMap) {
         const TimeBudget budget(kInfinity);
         const UntangleResult u =
             untangle_prepared<3>(*prepared, options, budget, prepared->start, Logger{});
-        ASSERT_TRUE(u.untangled) << u.note;
+        ASSERT_TRUE(u.untangled) << to_string(u.outcome);
         const double before = largest_distortion(*prepared, u.positions);
         // Beyond what one factorization handles, within the barrier's exponent cap.
         ASSERT_GT(options.s * before, 3.0 * kExponentRange);
@@ -67,11 +67,11 @@ TEST(VertexStageContinuation, LowersTheDistortionOfAnUntangledMap) {
         const VertexStage v =
             run_vertex_stage<3>(prepared->mesh, prepared->frames, prepared->assembly.energies,
                                 u.positions, fixed, options, Logger{}, terms);
-        EXPECT_TRUE(v.ran) << v.note;
-        EXPECT_NE(v.note.find("exponent continuation"), std::string::npos) << v.note;
+        EXPECT_EQ(v.outcome, VertexStageOutcome::kRan) << to_string(v.outcome);
+        EXPECT_GT(v.continuation_rounds, 1) << v.figures;
         const double after = largest_distortion(*prepared, v.positions);
-        EXPECT_LT(after, 0.15 * before) << v.note;
-        EXPECT_LT(after, 12.0) << v.note;
+        EXPECT_LT(after, 0.15 * before) << v.figures;
+        EXPECT_LT(after, 12.0) << v.figures;
         const MapQuality q =
             map_quality<3>(linear_parts<3>(prepared->mesh, prepared->frames, v.positions),
                            prepared->frames.volume);
@@ -94,10 +94,13 @@ TEST(VertexStageContinuation, UntanglingFallbackEndsLowDistorted) {
     result.positions = g.initial;  // the tangled map, as if the assembly had left it
     const TimeBudget budget(kInfinity);
     ASSERT_TRUE(untangle_fallback<3>(*prepared, options, budget, {}, result));
-    EXPECT_TRUE(result.vertex_stage_ran) << result.fallback;
+    ASSERT_EQ(result.stages.records.size(), 2u);
+    EXPECT_EQ(result.stages.outcome<FallbackOutcome>(Stage::kFallback), FallbackOutcome::kReplaced);
+    EXPECT_EQ(result.stages.records[1].stage, Stage::kVertexStage);
+    EXPECT_TRUE(result.stages.vertex_stage_ran()) << result.stages.records[0].figures;
     const Eigen::MatrixXd x = (result.positions.rowwise() - prepared->map_center) * prepared->scale;
     // The untangled map handed to the stage has a largest distortion of about 150.
-    EXPECT_LT(largest_distortion(*prepared, x), 12.0) << result.fallback;
+    EXPECT_LT(largest_distortion(*prepared, x), 12.0) << result.stages.records[1].figures;
     const MapQuality q = map_quality<3>(linear_parts<3>(prepared->mesh, prepared->frames, x),
                                         prepared->frames.volume);
     EXPECT_EQ(q.inverted + q.degenerate, 0);
@@ -132,10 +135,10 @@ TEST(VertexStageContinuation, LowersASimplexBeyondTheCapWhenNothingIsFixed) {
     const VertexStage v_stage =
         run_vertex_stage<3>(prepared->mesh, prepared->frames, prepared->assembly.energies, start,
                             fixed, options, Logger{}, terms);
-    EXPECT_TRUE(v_stage.ran) << v_stage.note;
-    EXPECT_NE(v_stage.note.find("exponent continuation"), std::string::npos) << v_stage.note;
+    EXPECT_EQ(v_stage.outcome, VertexStageOutcome::kRan) << to_string(v_stage.outcome);
+    EXPECT_GT(v_stage.continuation_rounds, 0) << v_stage.figures;
     const double after = largest_distortion(*prepared, v_stage.positions);
-    EXPECT_LT(after, 10.0) << v_stage.note;
+    EXPECT_LT(after, 10.0) << v_stage.figures;
     const MapQuality q =
         map_quality<3>(linear_parts<3>(prepared->mesh, prepared->frames, v_stage.positions),
                        prepared->frames.volume);

@@ -30,10 +30,12 @@
 //      similarities and cannot see which simplices are inverted: on a fixed boundary with a
 //      large tangled region (../shared/data/tlc/armadillo-598) they never improve on M^0.
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "frontends/map/detail/prepared_problem.h"
+#include "frontends/simplex_assembly/stage_trace.h"
 #include "optim/logger.h"
 
 namespace sa {
@@ -47,7 +49,7 @@ struct SubmeshStart {
     int rejected = 0;             ///< accelerated points replaced by plain steps
     bool untangled = false;       ///< from the untangling (untangle.h): see bad_simplices()
     int untangle_iterations = 0;  ///< Newton steps of the untangling start (untangle.h), if run
-    std::string untangle_note;    ///< how it ended (empty when it did not run)
+    std::optional<UntangleOutcome> untangle;  ///< how it ended, when it ran
 };
 
 /// Simplices whose linear parts A (normalized map) the barrier rejects (inverted, at or over the

@@ -32,7 +32,8 @@ UntangleResult untangle_prepared(PreparedProblem<D>& prepared,
                                  const SimplexAssemblyOptions& options, const TimeBudget& budget,
                                  const Eigen::MatrixXd& start, const Logger& logger);
 
-/// Returns true when result.positions was replaced (and then result.fallback says what ran).
+/// Adds its record (Stage::kFallback) to result.stages, then the vertex stage's when that ran;
+/// returns true when result.positions was replaced.
 template <int D>
 bool untangle_fallback(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& options,
                        const TimeBudget& budget, const SimplexAssemblyObserver& observer,

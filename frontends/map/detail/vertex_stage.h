@@ -34,6 +34,7 @@
 #include "frontends/map/detail/prepared_problem.h"
 #include "frontends/map/map_options.h"
 #include "frontends/simplex_assembly/simplex_term.h"
+#include "frontends/simplex_assembly/stage_trace.h"
 #include "geometry/boundary_fans.h"
 #include "geometry/rest_frames.h"
 #include "optim/logger.h"
@@ -42,11 +43,13 @@
 namespace sa {
 
 struct VertexStage {
-    bool ran = false;           ///< false when the start was not feasible (an inverted simplex)
-    std::string note;           ///< why it did not run, or how it ended
+    VertexStageOutcome outcome = VertexStageOutcome::kSkippedInfeasibleStart;
+    bool ran() const { return newton_ran(outcome); }
     Eigen::MatrixXd positions;  ///< #V x D (the start when it did not run)
     NewtonSummary newton;
     AssemblyStop stop = AssemblyStop::kConverged;  ///< the engine's reason, when it ran
+    int continuation_rounds = 0;  ///< rounds of the exponent continuation (0: a single run)
+    std::string figures;          ///< the continuation's rounds in words (empty without)
 };
 
 /// The per-simplex energies at another exponent s of E_C, for the continuation.
@@ -93,5 +96,8 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
                              const Eigen::MatrixXd& start, const std::vector<unsigned char>& fixed,
                              const SimplexAssemblyOptions& options, const Logger& logger,
                              const VertexStageTerms<D>& terms = {});
+
+/// Records `stage` in `trace`: its outcome, Newton steps and figures, and `seconds`.
+void record_vertex_stage(StageTrace& trace, const VertexStage& stage, double seconds);
 
 }  // namespace sa
