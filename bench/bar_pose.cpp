@@ -1,5 +1,5 @@
-// Writes the paper's Figure 16 experiment (geometry/bar_deformation.h) as the files `sa deform`
-// reads: the rest bar as PREFIX.mesh (Medit) and its handles' targets as PREFIX_targets.txt
+// Writes the paper's Figure 16 experiment (tests/fixtures/bar_deformation.h) as the files `sa
+// deform` reads: the rest bar as PREFIX.mesh (Medit) and its handles' targets as PREFIX_targets.txt
 // (rows `index x y z`); for ../shared/tools/check_map.py also the handles as PREFIX_handles.txt
 // and the rest shape with the handles at their targets as PREFIX_posed_handles.mesh. For
 // bench/deform_benchmarks.py:
@@ -13,9 +13,9 @@
 #include <fstream>
 #include <iomanip>
 
-#include "geometry/bar_deformation.h"
 #include "geometry/io/mesh_file.h"
 #include "optim/errors.h"
+#include "tests/fixtures/bar_deformation.h"
 
 int main(int argc, char** argv) {
     CLI::App app("The Figure 16 bar, posed by its handle slabs, as files for sa deform");

@@ -17,11 +17,11 @@
 
 #include "frontends/deform/deform_start.h"
 #include "frontends/output/pose_picture.h"
-#include "geometry/bar_deformation.h"
 #include "geometry/io/mesh_file.h"
 #include "geometry/mesh_topology.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
+#include "tests/fixtures/bar_deformation.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"The ARAP start of deformation posing, measured"};

@@ -12,7 +12,7 @@ Cases:
                   handles (untwist's handles do not move: its start is the rest shape)
   knight          tet/decimated-knight.mesh, the handles of deform/knight's selection at the pose
                   of bench/knight_pose.py (libigl's ARAP tutorial at anim_t = 1), as `index x y z`
-  bar-<pose>      the generated bar of Figure 16 (geometry/bar_deformation.h)
+  bar-<pose>      the generated bar of Figure 16 (tests/fixtures/bar_deformation.h)
 
   python3 bench/deform_start_benchmarks.py [--runs 3] [--only NAME] [--write BENCHMARKS.md]
 """

@@ -1,6 +1,6 @@
-// Writes a generated mapping problem (geometry/generated_problems.h) in the plain-text problem
-// format of ../shared/data/tlc/*/input (rest, initial map, simplices, handles), for `sa map` and
-// bench/map_benchmarks.py:
+// Writes a generated mapping problem (tests/fixtures/generated_problems.h) in the plain-text
+// problem format of ../shared/data/tlc/*/input (rest, initial map, simplices, handles), for `sa
+// map` and bench/map_benchmarks.py:
 //
 //   bench_generate_problem --kind fixed-boundary --mesh ../shared/data/tet/hand.mesh
 //       --deformation twist --amount 1.5 --noise 1.0 --seed 1 --out hand-twist.txt
@@ -18,15 +18,15 @@
 #include <iostream>
 #include <type_traits>
 
-#include "geometry/generated_problems.h"
 #include "geometry/io/mesh_file.h"
 #include "geometry/map_quality.h"
 #include "geometry/mesh_generators.h"
 #include "geometry/rest_frames.h"
 #include "optim/errors.h"
+#include "tests/fixtures/generated_problems.h"
 
 int main(int argc, char** argv) {
-    CLI::App app("Generated mapping problems (geometry/generated_problems.h)");
+    CLI::App app("Generated mapping problems (tests/fixtures/generated_problems.h)");
     std::string kind = "fixed-boundary", mesh_path, deformation = "twist", out;
     std::vector<int> grid;
     double amount = 1.5, noise = 1.0, flatten = 1.0, slab = 0.05;

@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
-#include "geometry/bar_deformation.h"
 #include "geometry/map_quality.h"
 #include "geometry/rest_frames.h"
+#include "tests/fixtures/bar_deformation.h"
 
 namespace sa {
 namespace {

@@ -4,9 +4,9 @@
 
 #include <Eigen/Geometry>
 
-#include "geometry/bar_deformation.h"
 #include "geometry/mesh_generators.h"
 #include "optim/errors.h"
+#include "tests/fixtures/bar_deformation.h"
 
 namespace sa {
 namespace {

@@ -1,12 +1,12 @@
 #pragma once
 // Fixed-boundary test problems with many inverted simplices: generated from any mesh, or from
-// geometry/generated_problems.h.
+// tests/fixtures/generated_problems.h.
 
 #include <random>
 
 #include "frontends/map/map_solve.h"
-#include "geometry/generated_problems.h"
 #include "geometry/mesh_topology.h"
+#include "tests/fixtures/generated_problems.h"
 
 namespace sa {
 

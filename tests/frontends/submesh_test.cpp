@@ -5,10 +5,10 @@
 #include <cstring>
 
 #include "frontends/map/map_solve.h"
-#include "geometry/generated_problems.h"
 #include "geometry/mesh_generators.h"
 #include "geometry/mesh_topology.h"
 #include "scrambled_problem.h"
+#include "tests/fixtures/generated_problems.h"
 
 namespace sa {
 namespace {
@@ -137,10 +137,10 @@ TEST(SubmeshMode, TheStartSpreadsALargeHandleRotation) {
 }
 
 // A bar whose end slabs are handles twisted by half a turn against each other, every other vertex
-// at rest (geometry/generated_problems.h): from that initial map, region solves (small meshes) and
-// the local/global iterations then the untangling (large ones) ended with every tetrahedron
-// positive but edges wrapped twice (branch points), or at the time limit with folds. The start
-// from the handles' rotations carried through the bar has no bad simplex.
+// at rest (tests/fixtures/generated_problems.h): from that initial map, region solves (small
+// meshes) and the local/global iterations then the untangling (large ones) ended with every
+// tetrahedron positive but edges wrapped twice (branch points), or at the time limit with folds.
+// The start from the handles' rotations carried through the bar has no bad simplex.
 TEST(SubmeshMode, HandlesTwistedByHalfATurnGiveALocallyInjectiveMap) {
     for (int n : {4, 6}) {
         const GeneratedProblem g = handle_slab_problem(grid_tetrahedra(n, n, 4 * n),

@@ -1,4 +1,4 @@
-#include "geometry/bar_deformation.h"
+#include "tests/fixtures/bar_deformation.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-// Generated mapping problems (geometry/generated_problems.h): feasible by construction.
+// Generated mapping problems (tests/fixtures/generated_problems.h): feasible by construction.
 
-#include "geometry/generated_problems.h"
+#include "tests/fixtures/generated_problems.h"
 
 #include <gtest/gtest.h>
 

@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "geometry/arap_deformation.h"
-#include "geometry/bar_deformation.h"
 #include "geometry/map_quality.h"
 #include "geometry/mesh_generators.h"
+#include "tests/fixtures/bar_deformation.h"
 
 namespace sa {
 namespace {
