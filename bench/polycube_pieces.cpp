@@ -11,9 +11,9 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "frontends/polycube/cube_cover.h"
 #include "frontends/polycube/polycube_output.h"
 #include "frontends/polycube/polycube_preparation.h"
-#include "geometry/cube_cover.h"
 #include "geometry/io/mesh_file.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"

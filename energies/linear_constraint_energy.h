@@ -6,9 +6,9 @@
 // a sum of squares of linear functions: quadratic (constant Hessian 2 C_e^T C_e) and convex, so
 // the optimizer assembles and factors its pattern once and never projects it. Whatever a user
 // writes as "these variables satisfy C x = b" goes through it: PolyCube planarity a^T A_i e = 0
-// (energies/polycube_constraints.h), a vertex sliding on a plane or a line, a vertex kept on a
-// plane in the vertex stage. Weighted by lambda like the other assembly terms; scale each row so
-// that its residual has the units of the others (unit edges, as Eq. 7 does).
+// (frontends/polycube/polycube_constraints.h), a vertex sliding on a plane or a line, a vertex kept
+// on a plane in the vertex stage. Weighted by lambda like the other assembly terms; scale each row
+// so that its residual has the units of the others (unit edges, as Eq. 7 does).
 
 #include <string>
 #include <vector>

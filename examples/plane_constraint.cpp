@@ -5,7 +5,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "frontends/map/map_solve.h"
+#include "frontends/simplex_assembly/map_solve.h"
 #include "geometry/mesh_generators.h"
 #include "geometry/mesh_topology.h"
 

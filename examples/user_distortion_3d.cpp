@@ -6,7 +6,7 @@
 #include <random>
 
 #include "energies/distortion_barrier.h"
-#include "frontends/map/map_solve.h"
+#include "frontends/simplex_assembly/map_solve.h"
 #include "geometry/mesh_generators.h"
 #include "geometry/mesh_topology.h"
 #include "geometry/rest_frames.h"

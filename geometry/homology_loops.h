@@ -1,7 +1,7 @@
 #pragma once
 // Closed loops of mesh edges that generate the first homology of a triangulated surface: the
 // loops around which a map's edge vectors, once every triangle closes, may still fail to close
-// (a handle, a hole). r-SA imposes them (frontends/map/detail/assembly_problem.h).
+// (a handle, a hole). r-SA imposes them (frontends/simplex_assembly/detail/assembly_problem.h).
 //
 // Tree-cotree (Eppstein 2003): a breadth-first spanning tree of the vertex graph, then a spanning
 // forest of the dual graph over the edges not in that tree, in which every boundary edge leads

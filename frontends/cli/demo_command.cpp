@@ -8,9 +8,9 @@
 
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/output_plan.h"
-#include "frontends/map/map_solve.h"
 #include "frontends/output/layout_picture.h"
 #include "frontends/output/map_output.h"
+#include "frontends/simplex_assembly/map_solve.h"
 #include "geometry/harmonic_map.h"
 #include "geometry/io/vtk_io.h"
 #include "geometry/map_quality.h"

@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "frontends/map/map_options.h"
+#include "frontends/simplex_assembly/map_options.h"
 
 namespace sa::cli {
 

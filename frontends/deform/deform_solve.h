@@ -16,7 +16,7 @@
 
 #include "frontends/deform/deform_options.h"
 #include "frontends/deform/deform_start.h"
-#include "frontends/map/optimal_bound.h"
+#include "frontends/simplex_assembly/optimal_bound.h"
 
 namespace sa {
 

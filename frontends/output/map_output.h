@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "frontends/map/map_solve.h"
+#include "frontends/simplex_assembly/map_solve.h"
 #include "geometry/io/vtk_io.h"
 
 namespace sa {

@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "frontends/map/map_solve.h"
+#include "frontends/simplex_assembly/map_solve.h"
 
 namespace sa {
 

@@ -8,9 +8,19 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(FixedBoundaryPart, dimension, simplices, firs
                                    encloses_volume, turning_measured, turning, euler)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SubmeshRound, round, bad_simplices, regions, colors, solved,
                                    failed, remaining, time)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SubmeshStats, start, start_iterations, start_rejected, start_bad,
-                                   start_near_bound, rounds, solves, iterations, largest_submesh,
-                                   max_rings, out_of_time)
+void to_json(nlohmann::json& out, const SubmeshStats& m) {
+    out = {{"start", m.start.describe()},
+           {"start_iterations", m.start_iterations},
+           {"start_rejected", m.start_rejected},
+           {"start_bad", m.start_bad},
+           {"start_near_bound", m.start_near_bound},
+           {"rounds", m.rounds},
+           {"solves", m.solves},
+           {"iterations", m.iterations},
+           {"largest_submesh", m.largest_submesh},
+           {"max_rings", m.max_rings},
+           {"out_of_time", m.out_of_time}};
+}
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(StageTimes, setup, disassembly, optimization, recovery,
                                    vertex_stage, verification, total)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PhaseTimes, setup, evaluate, project, assemble, analyze,

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "frontends/map/map_solve.h"
+#include "frontends/simplex_assembly/map_solve.h"
 #include "geometry/handle_feasibility.h"
 
 namespace sa {

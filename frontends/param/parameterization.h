@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "frontends/map/map_solve.h"
-#include "frontends/map/optimal_bound.h"
 #include "frontends/param/start_fallback.h"
+#include "frontends/simplex_assembly/map_solve.h"
+#include "frontends/simplex_assembly/optimal_bound.h"
 
 namespace sa {
 

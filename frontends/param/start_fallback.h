@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "frontends/map/vertex_descent.h"
 #include "frontends/param/start_disk.h"
+#include "frontends/simplex_assembly/vertex_descent.h"
 #include "geometry/mesh_topology.h"
 
 namespace sa {

@@ -1,6 +1,6 @@
 #include "frontends/polycube/boundary_angle_sums.h"
 
-#include "energies/tet_angle_barriers.h"
+#include "frontends/polycube/tet_angle_barriers.h"
 
 namespace sa {
 

@@ -1,6 +1,6 @@
 #pragma once
 // The boundary angle sums of a tetrahedral map (the quantities the 3D barriers of
-// energies/tet_angle_barriers.h keep below their limits), from vertex positions:
+// frontends/polycube/tet_angle_barriers.h keep below their limits), from vertex positions:
 //   theta_e = sum of the dihedral angles at boundary edge e of the tetrahedra around it,
 //   theta_v = sum of the solid angles at boundary vertex v of the tetrahedra around it,
 // each angle signed against its tetrahedron's rest orientation. A map whose tetrahedra all keep
@@ -10,7 +10,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "geometry/tet_boundary_fans.h"
+#include "frontends/polycube/tet_boundary_fans.h"
 
 namespace sa {
 

@@ -4,8 +4,9 @@
 // computed by closest axis, cleaned and, where chart boundaries turn back, repaired
 // (polycube_label_repair.h), in the input's axes or turned by
 // polycube_orientation(), whichever labelling is better), checked, the mesh split where
-// planarity would squash it (geometry/polycube_splits.h), and the least conformal distortion the
-// labels force on any valid map measured (geometry/polycube_angle_bound.h).
+// planarity would squash it (frontends/polycube/polycube_splits.h), and the least conformal
+// distortion the labels force on any valid map measured
+// (frontends/polycube/polycube_angle_bound.h).
 //
 //   PolycubeLabelInput input;                 // empty: compute the labels
 //   input.flags = "S1.flags";
@@ -24,14 +25,14 @@
 #include <string>
 #include <vector>
 
+#include "frontends/polycube/polycube_angle_bound.h"
+#include "frontends/polycube/polycube_boundary_monotonicity.h"
+#include "frontends/polycube/polycube_label_cleanup.h"
+#include "frontends/polycube/polycube_label_repair.h"
+#include "frontends/polycube/polycube_orientation.h"
+#include "frontends/polycube/polycube_splits.h"
 #include "frontends/polycube/polycube_verification.h"
-#include "geometry/polycube_angle_bound.h"
-#include "geometry/polycube_boundary_monotonicity.h"
-#include "geometry/polycube_label_cleanup.h"
-#include "geometry/polycube_label_repair.h"
-#include "geometry/polycube_orientation.h"
-#include "geometry/polycube_splits.h"
-#include "geometry/tet_boundary_fans.h"
+#include "frontends/polycube/tet_boundary_fans.h"
 #include "optim/logger.h"
 
 namespace sa {

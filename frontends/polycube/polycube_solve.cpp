@@ -9,12 +9,12 @@
 #include <sstream>
 #include <tuple>
 
-#include "energies/polycube_constraints.h"
 #include "frontends/polycube/boundary_angle_sums.h"
+#include "frontends/polycube/cube_cover.h"
+#include "frontends/polycube/polycube_constraints.h"
+#include "frontends/polycube/polycube_planes.h"
 #include "frontends/polycube/polycube_terms.h"
 #include "frontends/simplex_assembly/untangle.h"
-#include "geometry/cube_cover.h"
-#include "geometry/polycube_planes.h"
 #include "geometry/rest_frames.h"
 #include "geometry/submesh.h"
 #include "geometry/tet_boundary.h"
@@ -316,7 +316,7 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
         engine.add_linear_constraints<12, 3>("polycube planes at their start", rows);
     }
 
-    /// Planes (geometry/polycube_planes.h), and each boundary vertex's planes.
+    /// Planes (frontends/polycube/polycube_planes.h), and each boundary vertex's planes.
     void build_planes() {
         const PolycubePlanes planes =
             polycube_planes(p_.boundary, p_.charts, p_.mesh.num_vertices());

@@ -1,21 +1,22 @@
 #pragma once
 // The PolyCube solve (issue 21; the paper's 5.3 with 5.1's barriers), a configuration of the mesh
-// driver (frontends/map/map_solve.h) and its engine, with no schedule of its own:
+// driver (frontends/simplex_assembly/map_solve.h) and its engine, with no schedule of its own:
 //
-//   1. the cube-cover start (geometry/cube_cover.h): planar, axis-aligned charts, possibly folded;
+//   1. the cube-cover start (frontends/polycube/cube_cover.h): planar, axis-aligned charts,
+//   possibly folded;
 //      when folded, untangled in vertex variables with every plane one variable
 //      (PolycubePluginOptions), and the driver starts from that map when it untangles;
 //   2. the driver's disassembly (closest similarity, 4.2), its assembly (Eq. 10, f-SA) and its
 //      vertex stage, minimizing the conformal barrier E_C (bound K, or none) with the PolyCube
 //      plugin (polycube_plugin()) adding, in the assembly stage,
 //        - planarity a^T A_i e_k = 0 on two normalized edges of every labelled boundary facet of
-//          tetrahedron i (energies/polycube_constraints.h), in E~_assembly: with the edge
+//          tetrahedron i (frontends/polycube/polycube_constraints.h), in E~_assembly: with the edge
 //          assembly of Eq. 7 every chart maps into one plane orthogonal to its axis;
 //        - each boundary vertex on its planes at the start's offsets, a^T (A_i u + T_i) = c, in
 //          E~_assembly (the paper's 5.3; it needs the translations of f-SA): every other term is
 //          blind to the map's scale, and E~ falls as the map shrinks (polycube_solve.cpp);
 //        - the 3D boundary-angle barriers E_e = 1 / (2 pi - theta_e) and E_v = 1 / (4 pi - theta_v)
-//          in A-form, on every boundary edge and vertex (energies/tet_angle_barriers.h);
+//          in A-form, on every boundary edge and vertex (frontends/polycube/tet_angle_barriers.h);
 //      and, in the vertex stage, the sliding boundary: the vertices of each plane (the charts of
 //      one axis that share vertices) are projected onto their mean coordinate, which becomes one
 //      variable shared by all of them (AssemblyPlugin::shared_coordinates): a chart vertex
@@ -40,9 +41,9 @@
 #include <string>
 #include <vector>
 
-#include "frontends/map/map_solve.h"
-#include "frontends/map/optimal_bound.h"
 #include "frontends/polycube/polycube_preparation.h"
+#include "frontends/simplex_assembly/map_solve.h"
+#include "frontends/simplex_assembly/optimal_bound.h"
 
 namespace sa {
 

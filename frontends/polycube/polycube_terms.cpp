@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "energies/polycube_constraints.h"
+#include "frontends/polycube/polycube_constraints.h"
 
 namespace sa {
 

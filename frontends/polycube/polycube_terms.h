@@ -13,15 +13,15 @@
 //   dihedral_sum_vertex_elements, solid_angle_sum_vertex_elements   the same in vertex form: per
 //                              boundary edge p, q and its ring; per boundary vertex, it and its
 //                              ring.
-// The barriers are of run-time arity (energies/tet_angle_barriers.h): every boundary edge and
-// vertex has one, whatever the number of its tetrahedra.
+// The barriers are of run-time arity (frontends/polycube/tet_angle_barriers.h): every boundary edge
+// and vertex has one, whatever the number of its tetrahedra.
 
 #include <array>
 #include <vector>
 
 #include "energies/linear_constraint_energy.h"
-#include "energies/tet_angle_barriers.h"
 #include "frontends/polycube/polycube_preparation.h"
+#include "frontends/polycube/tet_angle_barriers.h"
 #include "optim/ragged_elements.h"
 
 namespace sa {

@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
+#include "frontends/polycube/polycube_labeling.h"
+#include "frontends/polycube/tet_boundary_fans.h"
 #include "geometry/map_quality.h"
-#include "geometry/polycube_labeling.h"
-#include "geometry/tet_boundary_fans.h"
 
 namespace sa {
 

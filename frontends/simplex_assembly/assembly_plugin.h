@@ -1,8 +1,9 @@
 #pragma once
 // A front-end's own assembly terms (kind 2 of engine.h) and barriers over several simplices
-// (kind 3) for the mesh driver (frontends/map/map_solve.h): the hook through which a problem such
-// as PolyCube (planarity of the boundary charts, a sliding boundary, the 3D boundary-angle
-// barriers) is a configuration of the one driver and engine, with no schedule of its own.
+// (kind 3) for the mesh driver (frontends/simplex_assembly/map_solve.h): the hook through which a
+// problem such as PolyCube (planarity of the boundary charts, a sliding boundary, the 3D
+// boundary-angle barriers) is a configuration of the one driver and engine, with no schedule of its
+// own.
 //
 // A MappingProblem holds plugins (MappingProblem::plugins); the driver calls each in every place
 // where it builds an engine for the whole mesh:

@@ -53,8 +53,8 @@
 // What a front-end supplies: the layout and the start (disassembled, inside the barriers'
 // feasible set, 4.2), the terms, the fixed simplices or vertices, and a hook called after every
 // iteration. Recovery, the vertex stage and verification are the mesh driver's
-// (frontends/map/map_solve.h; a front-end's own kind-2 and kind-3 terms reach its engines through
-// assembly_plugin.h). This is the only place with lambda-schedule, termination or
+// (frontends/simplex_assembly/map_solve.h; a front-end's own kind-2 and kind-3 terms reach its
+// engines through assembly_plugin.h). This is the only place with lambda-schedule, termination or
 // Hessian-modification logic.
 
 #include <array>

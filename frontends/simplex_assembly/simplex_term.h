@@ -1,7 +1,7 @@
 #pragma once
-// A per-simplex energy of A handed to the mesh driver (frontends/map/map_solve.h): the built-in
-// mu E_m + E_C of the options, or a user's own E_m or barrier. The driver uses one in every
-// place an energy of A appears, each through a generic adapter, never a per-type method:
+// A per-simplex energy of A handed to the mesh driver (frontends/simplex_assembly/map_solve.h): the
+// built-in mu E_m + E_C of the options, or a user's own E_m or barrier. The driver uses one in
+// every place an energy of A appears, each through a generic adapter, never a per-type method:
 //   - the engine (kind 1 of engine.h), in any layout: the linear parts of r-SA and f-SA, v-SA's
 //     copies and the vertex stage's positions through VertexSimplexEnergy, which evaluates it at
 //     A = X E^-1 and projects its Hessian in A;

@@ -1,8 +1,8 @@
 #pragma once
 // A run's path through the stages of Simplex Assembly, typed: which stages ran, in order, how
 // each ended (an enum, never text), its Newton steps, its time and its figures. The mesh driver
-// (frontends/map/map_solve.h) records it in SimplexAssemblyResult::stages, the report serializes
-// it ("stages", frontends/output/map_report.h) and the tests assert on it.
+// (frontends/simplex_assembly/map_solve.h) records it in SimplexAssemblyResult::stages, the report
+// serializes it ("stages", frontends/output/map_report.h) and the tests assert on it.
 //
 // The stages a run of the mesh driver can pass, in order (docs/algorithm.md):
 //   kStartUntangle  the submesh mode's start, untangled in vertex variables when the initial map

@@ -4,12 +4,12 @@
 //   .flags (polycube_withHexEx, robustPolycube)  one label per tetrahedron facet, 4 per
 //       tetrahedron, tetrahedron by tetrahedron, facets in ultimaille's order: facet k of tet
 //       (v0, v1, v2, v3) is the one opposite v_k, wound {1,2,3}, {0,3,2}, {0,1,3}, {0,2,1}
-//       (geometry/polycube_labeling.h: kTetFacetCorners). -1 marks a facet without a label (an
-//       interior facet); 0..5 on boundary facets, label / 2 = axis (x, y, z).
+//       (frontends/polycube/polycube_labeling.h: kTetFacetCorners). -1 marks a facet without a
+//       label (an interior facet); 0..5 on boundary facets, label / 2 = axis (x, y, z).
 //   labeling.txt (fastbndpolycube)  one label 0..5 per triangle of a boundary surface (an OBJ),
 //       in the surface's triangle order.
 // The readers check the file (count and range); what a label means (its sign convention) is
-// decided from the geometry by geometry/polycube_labeling.h.
+// decided from the geometry by frontends/polycube/polycube_labeling.h.
 
 #include <string>
 #include <vector>

@@ -4,9 +4,9 @@
 #include <filesystem>
 #include <iostream>
 
-#include "frontends/map/map_solve.h"
 #include "frontends/output/layout_picture.h"
 #include "frontends/output/map_output.h"
+#include "frontends/simplex_assembly/map_solve.h"
 #include "geometry/mesh_generators.h"
 
 int main(int argc, char** argv) {

@@ -1,11 +1,11 @@
 // r-SA's Omega_s follows loops that generate the mesh's first homology
-// (frontends/map/detail/assembly_problem.h). Linear parts that agree across every shared facet
-// (Eq. 7) but integrate around a hole to a map that does not close, the derivative of
+// (frontends/simplex_assembly/detail/assembly_problem.h). Linear parts that agree across every
+// shared facet (Eq. 7) but integrate around a hole to a map that does not close, the derivative of
 // (log r, theta) around an annulus' hole or a ring's, must not count as assembled: with the
 // linear parts held, no choice of the translations brings E~_assembly near zero. Those of a map
 // that closes assemble exactly. (Before the loops, Omega_s was empty without handles and the
 // multivalued field had E~ = 0.)
-#include "frontends/map/detail/assembly_problem.h"
+#include "frontends/simplex_assembly/detail/assembly_problem.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 
 #include "geometry/mesh_generators.h"
 #include "geometry/rest_frames.h"
-#include "tests/geometry/polycube_fixtures.h"
+#include "tests/fixtures/polycube_fixtures.h"
 
 namespace sa {
 namespace {

@@ -1,10 +1,10 @@
-#include "frontends/map/optimal_bound.h"
+#include "frontends/simplex_assembly/optimal_bound.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "frontends/map/detail/prepared_problem.h"
+#include "frontends/simplex_assembly/detail/prepared_problem.h"
 #include "geometry/mesh_generators.h"
 #include "optim/errors.h"
 

@@ -6,15 +6,15 @@
 #include <filesystem>
 #include <fstream>
 
-#include "../geometry/polycube_fixtures.h"
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/command_options.h"
+#include "frontends/polycube/cube_cover.h"
 #include "frontends/polycube/polycube_output.h"
-#include "geometry/cube_cover.h"
 #include "geometry/io/medit_io.h"
 #include "geometry/io/mesh_file.h"
 #include "geometry/io/polycube_labels_io.h"
 #include "optim/errors.h"
+#include "tests/fixtures/polycube_fixtures.h"
 
 namespace sa::cli {
 namespace {

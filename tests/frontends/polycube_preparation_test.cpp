@@ -11,13 +11,13 @@
 #include <functional>
 #include <map>
 
-#include "../geometry/polycube_fixtures.h"
 #include "frontends/polycube/polycube_output.h"
 #include "geometry/io/medit_io.h"
 #include "geometry/io/obj_io.h"
 #include "geometry/io/polycube_labels_io.h"
 #include "geometry/io/vtk_io.h"
 #include "optim/errors.h"
+#include "tests/fixtures/polycube_fixtures.h"
 
 namespace sa {
 namespace {
@@ -247,8 +247,8 @@ TEST_F(PolycubePreparation, ExtremeScalesArePreparedAsAtUnitScale) {
         EXPECT_TRUE(p.mesh.vertices.isApprox(left * unit.mesh.vertices, 1e-14));
         EXPECT_NEAR(p.angle_bound.bound, unit.angle_bound.bound, 1e-12);
         EXPECT_EQ(p.rest_positions().topRows(mesh.num_vertices()), scaled.vertices);
-        EXPECT_TRUE(p.in_input_units(p.mesh.vertices).isApprox(
-            scale * unit.in_input_units(unit.mesh.vertices), 1e-14));
+        EXPECT_TRUE(p.in_input_units(p.mesh.vertices)
+                        .isApprox(scale * unit.in_input_units(unit.mesh.vertices), 1e-14));
     }
 }
 

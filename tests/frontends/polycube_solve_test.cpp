@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
-#include "../geometry/polycube_fixtures.h"
-#include "geometry/cube_cover.h"
+#include "frontends/polycube/cube_cover.h"
 #include "geometry/map_quality.h"
 #include "geometry/mesh_generators.h"
 #include "geometry/rest_frames.h"
 #include "optim/errors.h"
+#include "tests/fixtures/polycube_fixtures.h"
 
 namespace sa {
 namespace {

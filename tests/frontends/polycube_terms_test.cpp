@@ -6,9 +6,9 @@
 #include <map>
 #include <span>
 
-#include "../geometry/polycube_fixtures.h"
 #include "frontends/polycube/boundary_angle_sums.h"
-#include "geometry/polycube_planes.h"
+#include "frontends/polycube/polycube_planes.h"
+#include "tests/fixtures/polycube_fixtures.h"
 
 namespace sa {
 namespace {

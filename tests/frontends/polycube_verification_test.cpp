@@ -4,9 +4,9 @@
 
 #include <map>
 
-#include "../geometry/polycube_fixtures.h"
 #include "frontends/polycube/boundary_angle_sums.h"
 #include "frontends/polycube/polycube_preparation.h"
+#include "tests/fixtures/polycube_fixtures.h"
 
 namespace sa {
 namespace {

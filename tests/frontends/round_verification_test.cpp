@@ -1,4 +1,4 @@
-#include "frontends/map/detail/round_verification.h"
+#include "frontends/simplex_assembly/detail/round_verification.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "frontends/map/map_solve.h"
+#include "frontends/simplex_assembly/map_solve.h"
 #include "geometry/mesh_topology.h"
 #include "tests/fixtures/generated_problems.h"
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-#include "frontends/map/map_solve.h"
+#include "frontends/simplex_assembly/map_solve.h"
 #include "geometry/handle_feasibility.h"
 #include "geometry/mesh_generators.h"
 #include "geometry/mesh_topology.h"

@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "frontends/map/map_solve.h"
+#include "frontends/simplex_assembly/map_solve.h"
 #include "geometry/handle_feasibility.h"
 #include "geometry/io/problem_io.h"
 

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "frontends/map/detail/prepared_problem.h"
-#include "frontends/map/detail/submesh_assembly.h"
-#include "frontends/map/map_solve.h"
+#include "frontends/simplex_assembly/detail/prepared_problem.h"
+#include "frontends/simplex_assembly/detail/submesh_assembly.h"
+#include "frontends/simplex_assembly/map_solve.h"
 #include "geometry/map_quality.h"
 #include "geometry/mesh_generators.h"
 #include "geometry/rest_frames.h"

@@ -5,8 +5,8 @@
 #include <random>
 
 #include "energies/distortion_barrier.h"
-#include "frontends/map/map_solve.h"
-#include "frontends/map/optimal_bound.h"
+#include "frontends/simplex_assembly/map_solve.h"
+#include "frontends/simplex_assembly/optimal_bound.h"
 #include "geometry/mesh_generators.h"
 #include "geometry/mesh_topology.h"
 #include "optim/errors.h"

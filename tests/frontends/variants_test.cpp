@@ -2,7 +2,7 @@
 
 #include <random>
 
-#include "frontends/map/map_solve.h"
+#include "frontends/simplex_assembly/map_solve.h"
 #include "geometry/mesh_generators.h"
 #include "geometry/mesh_topology.h"
 #include "optim/errors.h"

@@ -6,7 +6,7 @@
 
 #include "geometry/mesh_topology.h"
 #include "optim/errors.h"
-#include "polycube_fixtures.h"
+#include "tests/fixtures/polycube_fixtures.h"
 
 namespace sa {
 namespace {

@@ -1,0 +1,206 @@
+#include "frontends/simplex_assembly/vertex_descent.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+#include "frontends/simplex_assembly/detail/prepared_problem.h"
+#include "frontends/simplex_assembly/detail/vertex_stage.h"
+#include "optim/errors.h"
+#include "optim/stopwatch.h"
+#include "optim/time_budget.h"
+
+namespace sa {
+
+namespace {
+
+/// Rounds of each continuation at most.
+constexpr int kMaxRounds = 30;
+/// A round that lowers the largest distortion by less than this share ends a continuation: the
+/// next round's exponent or bound would hardly differ.
+constexpr double kStall = 0.01;
+
+template <int D>
+VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOptions& options,
+                            const SimplexAssemblyObserver& observer) {
+    Stopwatch total, stage;
+    const TimeBudget budget(options.max_time_seconds);
+    VertexDescentResult out;
+    SimplexAssemblyResult& result = out.solve;
+    std::unique_ptr<PreparedProblem<D>> p = prepare_problem<D>(input, options, result.times);
+    const PreparedProblem<D>& prepared = *p;
+    result.initial_quality = prepared.initial_quality;
+    result.mode = SolveMode::kFull;
+    // The barrier is finite where det A > 0: a start whose triangles are all positively oriented
+    // can run, even if some are degenerate by the verification's relative rule.
+    out.start_valid =
+        std::all_of(prepared.initial_quality.per_simplex.begin(),
+                    prepared.initial_quality.per_simplex.end(),
+                    [](const SimplexQuality& q) { return q.det > 0.0 && std::isfinite(q.det); }) &&
+        (prepared.assembly.fans.empty() ||
+         count_boundary_violations(prepared.assembly.fans, prepared.initial_map) == 0);
+    Eigen::MatrixXd x = prepared.start;
+    // The anchored simplices keep all their vertices: a free part has no rigid motion left.
+    std::vector<unsigned char> fixed = prepared.recovery_fixed;
+    for (Index s : prepared.assembly.anchored_simplices) {
+        for (int k = 0; k <= D; ++k) fixed[prepared.mesh.simplices(s, k)] = 1;
+    }
+    const SimplexEnergyOptions base = simplex_energy_options(options);
+    const std::vector<Mat<D>> references = options.mapping_distortion == DistortionType::kDifference
+                                               ? prepared.assembly.reference_linear
+                                               : std::vector<Mat<D>>{};
+    const SimplexEnergy<D> measure(base, prepared.frames.volume, references);
+    auto largest_distortion = [&](const Eigen::MatrixXd& positions) {
+        double largest = 0.0;
+        for (const Mat<D>& A : linear_parts<D>(prepared.mesh, prepared.frames, positions))
+            largest = std::max(largest, measure.barrier_distortion(A));
+        return largest;
+    };
+    result.times.setup += stage.lap();
+
+    auto degenerate = [&](const Eigen::MatrixXd& positions) {
+        return map_quality<D>(linear_parts<D>(prepared.mesh, prepared.frames, positions),
+                              prepared.frames.volume)
+            .degenerate;
+    };
+    // A round whose result has degenerate simplices (by the verification's relative rule) while
+    // its start had none is undone, and the continuation ends: an energy whose minimizers are not
+    // representable (the conformal map of a nearly closed or strongly stretched surface shrinks
+    // parts of it exponentially) would otherwise turn a valid start into a failed result.
+    bool undone = false;
+    auto run_round = [&](double s, double bound) {
+        SimplexEnergyOptions e = base;
+        e.barrier.s = s;
+        e.barrier.bound = bound;
+        const SimplexEnergy<D> energy(e, prepared.frames.volume, references);
+        DescentRound round;
+        round.s = s;
+        round.bound = bound;
+        round.max_distortion_before = largest_distortion(x);
+        char line[200];
+        std::snprintf(line, sizeof line,
+                      "vertex descent round %d: s = %.4g, bound %.4g, largest distortion %.4g",
+                      int(out.rounds.size()), s, bound, round.max_distortion_before);
+        log_line(observer.logger, line);
+        SimplexAssemblyOptions o = with_time_left(options, budget);
+        o.s = s;
+        o.bound = bound;
+        // e^{s d} = 1 + s d + ...: for s << 1 the part of E that moves is s times smaller, and so
+        // must be the relative change that ends the round.
+        o.energy_tolerance = options.energy_tolerance * std::min(1.0, s);
+        VertexStage v = run_vertex_stage<D>(
+            prepared.mesh, prepared.frames, {simplex_term<D>("simplex energy", energy)}, x, fixed,
+            o, observer.logger, VertexStageTerms<D>{prepared.assembly.fans, {}});
+        round.iterations = v.newton.num_steps();
+        round.outcome = v.outcome;
+        if (v.ran()) {
+            const Index before = degenerate(x);
+            const Index after = before == 0 ? degenerate(v.positions) : 0;
+            if (after > 0) {
+                undone = true;
+                round.undone_degenerate = after;
+                log_line(observer.logger, "vertex descent: round undone: it left " +
+                                              std::to_string(after) +
+                                              " degenerate simplices, its start none");
+            } else {
+                x = std::move(v.positions);
+            }
+        }
+        round.max_distortion_after = largest_distortion(x);
+        record_vertex_stage(result.stages, v, v.newton.times.total);
+        result.vertex_stage = std::move(v.newton);
+        out.rounds.push_back(round);
+        return round.max_distortion_after;
+    };
+
+    if (out.start_valid) {
+        // The exponent's continuation, bounded from the start when the start is within K.
+        double d = largest_distortion(x);
+        const double bound = options.bound;
+        const double first_bound = d < bound ? bound : kInfinity;
+        for (int r = 0; r < kMaxRounds && !budget.exhausted(); ++r) {
+            const double s = std::min(options.s, kExponentRange / d);
+            const double after = run_round(s, first_bound);
+            const bool stalled = !(after < (1.0 - kStall) * d);
+            d = after;
+            if (s >= options.s || stalled || undone) break;
+        }
+        // The bound's continuation, for a start that was over it.
+        if (bound < kInfinity && first_bound == kInfinity) {
+            for (int r = 0; r < kMaxRounds && d >= bound && !undone && !budget.exhausted(); ++r) {
+                const double after =
+                    run_round(std::min(options.s, kExponentRange / d), d + 0.1 * (d - 1.0));
+                const bool stalled = !(after < (1.0 - kStall) * d);
+                d = after;
+                if (stalled) break;
+            }
+            if (d < bound && !undone && !budget.exhausted())
+                run_round(std::min(options.s, kExponentRange / d), bound);
+        }
+    }
+    result.times.vertex_stage += stage.lap();
+    result.newton.num_threads = result.vertex_stage.num_threads;  // no assembly ran
+    result.positions = prepared.to_original(x);
+    verify_result<D>(input, options, result, &prepared.topology);
+    if (!prepared.assembly.fans.empty()) {
+        result.boundary_violations_before =
+            count_boundary_violations(prepared.assembly.fans, prepared.initial_map);
+        result.boundary_violations_after =
+            count_boundary_violations(prepared.assembly.fans, result.positions);
+        if (result.boundary_violations_after > 0) result.success = false;
+    }
+    if (!out.start_valid) result.success = false;
+    std::ostringstream message;
+    message << (!result.success                      ? "FAILED: "
+                : result.verification.within_bound() ? "success: "
+                                                     : "no foldovers, over the bound: ")
+            << result.verification.describe() << ". ";
+    if (!out.start_valid) {
+        message << "The start is not valid (" << prepared.initial_quality.inverted << " inverted, "
+                << prepared.initial_quality.degenerate << " degenerate): no descent ran";
+    } else {
+        int steps = 0;
+        for (const DescentRound& r : out.rounds) steps += r.iterations;
+        message << "Newton on the vertex positions from the valid start: " << out.rounds.size()
+                << " round" << (out.rounds.size() == 1 ? "" : "s") << ", " << steps
+                << " iterations";
+        if (!out.rounds.empty()) {
+            const DescentRound& last = out.rounds.back();
+            message << ", s " << out.rounds.front().s << " to " << last.s << " ("
+                    << (newton_ran(last.outcome) ? to_string(result.vertex_stage.termination)
+                                                 : to_string(last.outcome));
+            if (last.undone_degenerate > 0)
+                message << "; undone: it left " << last.undone_degenerate
+                        << " degenerate simplices, its start none";
+            message << ")";
+        }
+        if (!result.verification.within_bound()) {
+            message << "; the bound " << options.bound << " was not reached (largest distortion "
+                    << result.verification.max_distortion << ")";
+        }
+    }
+    message << ".";
+    result.message = message.str();
+    result.times.total = total.seconds();
+    return out;
+}
+
+}  // namespace
+
+VertexDescentResult run_vertex_descent(const MappingProblem& problem,
+                                       const SimplexAssemblyOptions& options,
+                                       const SimplexAssemblyObserver& observer) {
+    options.validate();
+    switch (problem.mesh.simplex_dimension()) {
+        case 2:
+            return descend<2>(problem, options, observer);
+        case 3:
+            return descend<3>(problem, options, observer);
+        default:
+            throw InputError(problem.source + ": simplices have " +
+                             std::to_string(problem.mesh.simplices.cols()) +
+                             " vertices, expected 3 or 4");
+    }
+}
+
+}  // namespace sa

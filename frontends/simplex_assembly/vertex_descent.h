@@ -1,0 +1,69 @@
+#pragma once
+// A start that cannot fold, kept valid: Newton on the vertex positions (the vertex stage,
+// vertex_stage.h) of mu E_m + E_C from an initial map that is already inversion-free, without
+// disassembly or assembly. The barrier and the largest feasible step keep every iterate valid, so
+// the result has no inverted or degenerate simplex whenever the start has none: the fallback of
+// a parameterization whose requested start folds beyond repair (SLIM-style methods start the same
+// way, from a Tutte map).
+//
+// Two continuations make the start usable whatever its distortion:
+//  - the exponent: E_C = e^{s d} (Eq. 10) of a start with d in the hundreds (Tutte maps of meshes
+//    with sliver triangles) overflows the Hessian's range (e^{125} at d = 125: factorization
+//    fails). Each round takes s_r = min(s, kExponentRange / d_max), d_max the largest distortion
+//    at its start, so the worst simplex's barrier is at most e^{kExponentRange} times a perfect
+//    one's, and runs to convergence; the next round raises s_r as d_max falls, until s_r = s (the
+//    energy asked for). Fu et al. 2015 note AMIPS's sensitivity to s on highly distorted starts
+//    (the paper, section 5.1): this is the same exponent, raised gradually.
+//  - the bound: a start over the bound K cannot enter the bounded barrier e^{s d} / (K - d).
+//    The descent first runs unbounded; then, while d_max >= K, rounds with the bound
+//    K_r = d_max + (d_max - 1) / 10 lower d_max (the paper's optimal-bound rounds, section 5.1,
+//    with room above the current maximum so that the start is inside); the last round takes K.
+//    If d_max stops falling first, the result is valid but over the bound, and says so.
+// A round whose result has degenerate simplices (the verification's relative rule) while its start
+// had none is undone and ends the descent: energies whose minimizers are not representable in
+// doubles (conformal maps of long or nearly closed surfaces shrink parts by 1e14 and more) cannot
+// turn a valid start into a failed result.
+
+#include <string>
+#include <vector>
+
+#include "frontends/simplex_assembly/map_solve.h"
+
+namespace sa {
+
+/// One round of the descent.
+struct DescentRound {
+    double s = 1.0;                    ///< the exponent used
+    double bound = kInfinity;          ///< the bound used
+    double max_distortion_before = 0;  ///< d_max at the round's start (the barrier's measure)
+    double max_distortion_after = 0;
+    int iterations = 0;
+    VertexStageOutcome outcome = VertexStageOutcome::kRan;
+    /// Its result had degenerate simplices, its start none: the round was undone (above).
+    Index undone_degenerate = 0;
+};
+
+struct VertexDescentResult {
+    /// positions, verification, success, message, times, vertex_stage (the last round's Newton
+    /// summary); no assembly ran.
+    SimplexAssemblyResult solve;
+    std::vector<DescentRound> rounds;
+    /// Every simplex of the start is positively oriented (det A > 0): the barrier is finite there.
+    /// Degenerate simplices (by the verification's relative rule) may remain in the result.
+    bool start_valid = false;
+};
+
+/// The worst simplex's barrier relative to a perfect one's, as a power of e, at the start of a
+/// round. Measured on generated disks with sliver triangles (BENCHMARKS.md, "Robustness"):
+/// ranges of 10 to 30 converge, 50 leaves the first factorization failing.
+inline constexpr double kExponentRange = 20.0;
+
+/// Every simplex of `problem.initial` must be positively oriented (otherwise nothing runs:
+/// start_valid is false and the result is the start, reported as failed). Handles, anchors, E_m's
+/// reference and the boundary barrier are as in run_simplex_assembly. Throws as
+/// run_simplex_assembly on bad input.
+VertexDescentResult run_vertex_descent(const MappingProblem& problem,
+                                       const SimplexAssemblyOptions& options,
+                                       const SimplexAssemblyObserver& observer = {});
+
+}  // namespace sa
