@@ -170,13 +170,14 @@ int run_param_command(const ParamArguments& a) {
         if (r.fallback.used) {
             nlohmann::json starts = nlohmann::json::array();
             for (const TriedStart& t : r.fallback.starts) {
-                starts.push_back({{"start", t.name},
+                starts.push_back({{"start", start_name(t.weights)},
                                   {"valid", t.valid},
                                   {"verified", t.verified},
                                   {"max_distortion", std::isfinite(t.max_distortion)
                                                          ? nlohmann::json(t.max_distortion)
                                                          : nlohmann::json(nullptr)},
-                                  {"outcome", t.outcome}});
+                                  {"outcome", to_string(t.outcome)},
+                                  {"details", t.describe()}});
             }
             nlohmann::json descent = nlohmann::json::array();
             for (const DescentRound& d : r.fallback.rounds) {
@@ -189,9 +190,10 @@ int run_param_command(const ParamArguments& a) {
                                    {"outcome", to_string(d.outcome)},
                                    {"undone_degenerate", d.undone_degenerate}});
             }
-            fallback["reason"] = r.fallback.reason;
+            fallback["reason"] = r.fallback.describe_reason();
             fallback["starts"] = starts;
-            fallback["start"] = r.fallback.start;
+            fallback["start"] = r.fallback.start ? nlohmann::json(start_name(*r.fallback.start))
+                                                 : nlohmann::json(nullptr);
             fallback["descent_rounds"] = descent;
             fallback["time"] = r.fallback.time;
         }
@@ -232,9 +234,9 @@ int run_param_command(const ParamArguments& a) {
                 << r.reached_bound << "\n";
     }
     if (r.fallback.used) {
-        summary << "  fallback: " << r.fallback.reason << "\n";
+        summary << "  fallback: " << r.fallback.describe_reason() << "\n";
         for (const TriedStart& t : r.fallback.starts)
-            summary << "    " << t.name << ": " << t.outcome << "\n";
+            summary << "    " << start_name(t.weights) << ": " << t.describe() << "\n";
     }
     std::snprintf(line, sizeof line,
                   "  time %.2f s (read %.2f, initial map %.2f, Simplex Assembly %.2f, output "

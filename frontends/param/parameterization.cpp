@@ -118,17 +118,10 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
         // The requested start folded beyond repair, or its result is over the bound: a start that
         // cannot fold, kept valid by a barrier on the vertex positions (start_fallback.h).
         const Verification& v = result.solve.verification;
-        const std::string reason =
-            "the " + (initial_uv != nullptr ? std::string("given") : to_string(initial)) +
-            " start's result " +
-            (v.passed()
-                 ? "is over the bound (largest distortion " + std::to_string(v.max_distortion) +
-                       " > " + std::to_string(v.bound) + ")"
-                 : "does not verify (" + std::to_string(v.inverted) + " inverted, " +
-                       std::to_string(v.degenerate) + " degenerate)");
         MappingProblem fallback_problem = problem;
         result.fallback = fall_back_to_tutte(
-            fallback_problem, disk, with_time_left(options.solver, budget), observer, reason);
+            fallback_problem, disk, with_time_left(options.solver, budget), observer,
+            initial_uv != nullptr ? std::string("given") : to_string(initial), v);
         const StartFallback& f = result.fallback;
         const bool keep =
             f.verified() && (!v.passed() || f.solve.verification.max_distortion < v.max_distortion);
@@ -179,10 +172,10 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
                 << "at the centroid of the others); ";
     }
     if (result.fallback.used) {
-        message << "fallback (" << result.fallback.reason << "): ";
-        message << (result.fallback.verified()
-                        ? "from " + result.fallback.start + ", Newton on the vertex positions; "
-                        : "no start verified; ");
+        message << "fallback (" << result.fallback.describe_reason() << "): ";
+        message << (result.fallback.verified() ? "from " + start_name(*result.fallback.start) +
+                                                     ", Newton on the vertex positions; "
+                                               : "no start verified; ");
     }
     message << result.solve.verification.describe() << "; " << result.boundary_violations_after
             << " boundary vertices with an angle sum >= 2 pi (" << result.boundary_violations_before

@@ -5,12 +5,23 @@
 
 #include "geometry/initial_maps.h"
 #include "geometry/map_quality.h"
+#include "optim/enum_names.h"
 #include "optim/stopwatch.h"
 #include "optim/time_budget.h"
 
 namespace sa {
 
 namespace {
+
+constexpr EnumName<FallbackReason> kFallbackReasonNames[] = {
+    {FallbackReason::kNotVerified, "does not verify"},
+    {FallbackReason::kOverTheBound, "over the bound"}};
+
+constexpr EnumName<TriedStartOutcome> kTriedStartOutcomeNames[] = {
+    {TriedStartOutcome::kRejected, "rejected"},
+    {TriedStartOutcome::kVerified, "verified"},
+    {TriedStartOutcome::kNotVerified, "not verified"},
+    {TriedStartOutcome::kRepairKept, "the repaired start kept"}};
 
 MapQuality start_quality(const SimplicialMesh& mesh, const Eigen::MatrixXd& uv) {
     const RestFrames<2> frames = rest_frames<2>(mesh);
@@ -19,22 +30,81 @@ MapQuality start_quality(const SimplicialMesh& mesh, const Eigen::MatrixXd& uv) 
 
 }  // namespace
 
+std::string start_name(TutteWeights weights) {
+    return weights == TutteWeights::kMeanValue ? "tutte" : "tutte-uniform";
+}
+
+std::string to_string(FallbackReason reason) {
+    return enum_name(kFallbackReasonNames, reason);
+}
+
+std::string to_string(TriedStartOutcome outcome) {
+    return enum_name(kTriedStartOutcomeNames, outcome);
+}
+
+std::string TriedStart::describe() const {
+    std::ostringstream out;
+    if (repair_degenerate > 0) {
+        out << "its map had " << repair_degenerate
+            << " degenerate triangles; the isometric repair ";
+        if (repaired) {
+            out << "removed them in " << repair_rounds << " rounds; ";
+        } else {
+            out << "left " << repair.degenerate << " degenerate and " << repair.inverted
+                << " inverted; ";
+        }
+    }
+    switch (outcome) {
+        case TriedStartOutcome::kRejected:
+            out << "rejected: the map itself has " << start_quality.inverted << " inverted and "
+                << start_quality.degenerate << " degenerate triangles";
+            break;
+        case TriedStartOutcome::kRepairKept:
+            out << "the solver's energy from it left " << verification.degenerate
+                << " degenerate triangles, so the repaired map is kept";
+            break;
+        case TriedStartOutcome::kVerified:
+            out << verification.describe();
+            break;
+        case TriedStartOutcome::kNotVerified:
+            out << "not verified: " << verification.describe();
+            break;
+    }
+    return out.str();
+}
+
+std::string StartFallback::describe_reason() const {
+    std::ostringstream out;
+    out << "the " << requested_start << " start's result ";
+    if (reason == FallbackReason::kOverTheBound) {
+        out << "is over the bound (largest distortion " << requested.max_distortion << " > "
+            << requested.bound << ")";
+    } else {
+        out << "does not verify (" << requested.inverted << " inverted, " << requested.degenerate
+            << " degenerate)";
+    }
+    return out.str();
+}
+
 StartFallback fall_back_to_tutte(const MappingProblem& problem, const StartDisk& disk,
                                  const SimplexAssemblyOptions& solver,
-                                 const SimplexAssemblyObserver& observer, std::string reason) {
+                                 const SimplexAssemblyObserver& observer,
+                                 std::string requested_start, const Verification& requested) {
     Stopwatch watch;
     const TimeBudget budget(solver.max_time_seconds);
     StartFallback fallback;
     fallback.used = true;
-    fallback.reason = std::move(reason);
-    log_line(observer.logger, "fallback: " + fallback.reason);
+    fallback.reason =
+        requested.passed() ? FallbackReason::kOverTheBound : FallbackReason::kNotVerified;
+    fallback.requested_start = std::move(requested_start);
+    fallback.requested = requested;
+    log_line(observer.logger, "fallback: " + fallback.describe_reason());
     for (TutteWeights weights : {TutteWeights::kMeanValue, TutteWeights::kUniform}) {
         TriedStart tried;
-        tried.name = weights == TutteWeights::kMeanValue ? "tutte" : "tutte-uniform";
+        tried.weights = weights;
         MappingProblem start = problem;
         start.initial = disk.to_surface(tutte_embedding(disk.mesh, disk.topology, weights));
-        log_line(observer.logger, "fallback: start from " + tried.name);
-        std::ostringstream outcome;
+        log_line(observer.logger, "fallback: start from " + start_name(weights));
         std::optional<VertexDescentResult> repaired;
         const MapQuality quality = start_quality(problem.mesh, start.initial);
         if (quality.degenerate > 0 && quality.inverted == 0) {
@@ -49,45 +119,39 @@ StartFallback fall_back_to_tutte(const MappingProblem& problem, const StartDisk&
             MappingProblem shrunken = start;
             shrunken.reference.resize(0, 0);
             const VertexDescentResult r = run_vertex_descent(shrunken, repair, observer);
-            outcome << "its map had " << quality.degenerate
-                    << " degenerate triangles; the isometric repair ";
+            tried.repair_degenerate = quality.degenerate;
+            tried.repaired = r.solve.success;
+            tried.repair_rounds = static_cast<int>(r.rounds.size());
+            tried.repair = r.solve.verification;
             if (r.solve.success) {
-                outcome << "removed them in " << r.rounds.size() << " rounds; ";
                 start.initial = r.solve.positions;
                 repaired = r;
-            } else {
-                outcome << "left " << r.solve.verification.degenerate << " degenerate and "
-                        << r.solve.verification.inverted << " inverted; ";
             }
         }
         start.reference = start.initial;
         VertexDescentResult r = run_vertex_descent(start, with_time_left(solver, budget), observer);
+        tried.start_quality = r.solve.initial_quality;
+        tried.verification = r.solve.verification;
+        tried.outcome = !r.start_valid    ? TriedStartOutcome::kRejected
+                        : r.solve.success ? TriedStartOutcome::kVerified
+                                          : TriedStartOutcome::kNotVerified;
         if (!r.solve.success && repaired && r.start_valid) {
             // The solver's energy shrank the repaired map back to degenerate triangles (its
             // minimizers are not representable: a conformal map of a deep tube shrinks
             // exponentially): the repaired map itself is the valid result.
-            outcome << "the solver's energy from it left " << r.solve.verification.degenerate
-                    << " degenerate triangles, so the repaired map is kept; ";
+            tried.outcome = TriedStartOutcome::kRepairKept;
             r = std::move(*repaired);
         }
         tried.valid = r.start_valid;
         tried.verified = r.solve.success;
         tried.max_distortion = r.solve.verification.max_distortion;
-        if (!r.start_valid) {
-            outcome << "rejected: the map itself has " << r.solve.initial_quality.inverted
-                    << " inverted and " << r.solve.initial_quality.degenerate
-                    << " degenerate triangles";
-        } else {
-            outcome << r.solve.message;
-        }
-        tried.outcome = outcome.str();
-        log_line(observer.logger, "fallback: " + tried.name + ": " + tried.outcome);
+        log_line(observer.logger, "fallback: " + start_name(weights) + ": " + tried.describe());
         const bool better =
             tried.verified && (!fallback.verified() ||
                                tried.max_distortion < fallback.solve.verification.max_distortion);
         fallback.starts.push_back(tried);
         if (better) {
-            fallback.start = tried.name;
+            fallback.start = weights;
             fallback.initial_uv = start.initial;
             fallback.rounds = std::move(r.rounds);
             fallback.solve = std::move(r.solve);

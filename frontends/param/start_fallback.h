@@ -14,41 +14,78 @@
 // options, whose barrier keeps every iterate valid; E_m's reference is that start (E_m =
 // difference measures the change from the initial map, and the initial map is now it).
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "frontends/param/start_disk.h"
 #include "frontends/simplex_assembly/vertex_descent.h"
+#include "geometry/initial_maps.h"
 #include "geometry/mesh_topology.h"
 
 namespace sa {
 
+/// Why the requested start's result was not kept.
+enum class FallbackReason {
+    kNotVerified,   ///< it has an inverted or degenerate triangle
+    kOverTheBound,  ///< it verifies, over the bound
+};
+
+/// How one Tutte start ended.
+enum class TriedStartOutcome {
+    kRejected,     ///< the start itself has inverted or degenerate triangles: no descent ran
+    kVerified,     ///< the descent from it verifies
+    kNotVerified,  ///< the descent from it does not verify
+    kRepairKept,   ///< the descent left degenerate triangles; the repaired start is the result
+};
+
+/// "tutte" (mean-value weights) or "tutte-uniform".
+std::string start_name(TutteWeights weights);
+std::string to_string(FallbackReason reason);
+std::string to_string(TriedStartOutcome outcome);
+
 struct TriedStart {
-    std::string name;     ///< "tutte" (mean-value) or "tutte-uniform"
-    std::string outcome;  ///< one sentence
-    bool valid = false;   ///< the start itself had no inverted or degenerate triangle
+    TutteWeights weights = TutteWeights::kMeanValue;
+    TriedStartOutcome outcome = TriedStartOutcome::kRejected;
+    /// Degenerate triangles of the start that the isometric repair ran on (0: it did not run),
+    /// whether it removed them (in repair_rounds rounds), and what it left.
+    Index repair_degenerate = 0;
+    bool repaired = false;
+    int repair_rounds = 0;
+    Verification repair;
+    bool valid = false;  ///< the start itself had no inverted or degenerate triangle
     bool verified = false;
     double max_distortion = kInfinity;  ///< of its result, in the barrier's measure
+    MapQuality start_quality;           ///< of the start the descent ran from
+    Verification verification;          ///< of its result
+    /// One sentence for the log and the report.
+    std::string describe() const;
 };
 
 struct StartFallback {
-    bool used = false;   ///< the fallback ran
-    std::string reason;  ///< why the requested start's result was not kept
+    bool used = false;  ///< the fallback ran
+    FallbackReason reason = FallbackReason::kNotVerified;
+    std::string requested_start;  ///< its name: "lscm", "given", ...
+    Verification requested;       ///< the requested start's result's verification
     std::vector<TriedStart> starts;
-    std::string start;           ///< the start whose result is `solve` (empty when none verified)
-    Eigen::MatrixXd initial_uv;  ///< that start, #V x 2
+    std::optional<TutteWeights> start;  ///< the start whose result is `solve`, if one verified
+    Eigen::MatrixXd initial_uv;         ///< that start, #V x 2
     std::vector<DescentRound> rounds;
     SimplexAssemblyResult solve;  ///< its result (verified: no inverted or degenerate triangle)
     double time = 0.0;
-    bool verified() const { return !start.empty(); }
+    bool verified() const { return start.has_value(); }
+    /// Why it ran, in a sentence with the figures.
+    std::string describe_reason() const;
 };
 
 /// Runs the fallback on `problem.mesh` with the solver's options; `problem` supplies the boundary
 /// barrier flag and the source name. The Tutte starts are computed on `disk` (start_disk.h).
 /// Keeps the first start whose result verifies within the bound, else the verified one of least
 /// distortion.
+/// `requested_start` names the start whose result `requested` did not verify or was over the bound.
 StartFallback fall_back_to_tutte(const MappingProblem& problem, const StartDisk& disk,
                                  const SimplexAssemblyOptions& solver,
-                                 const SimplexAssemblyObserver& observer, std::string reason);
+                                 const SimplexAssemblyObserver& observer,
+                                 std::string requested_start, const Verification& requested);
 
 }  // namespace sa
