@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Runs the default `sa map` on many generated problems of the fixed-boundary hard class
-(geometry/generated_problems.h through build/bin/bench_generate_problem: every boundary vertex a
+(tests/fixtures/generated_problems.h through build/bin/bench_generate_problem: every boundary vertex a
 handle at a twisted or bent, optionally flattened position, the interior tangled by a Tutte solve
 and seeded noise) and checks every result with ../shared/tools/check_map.py.
 

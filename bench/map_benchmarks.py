@@ -13,7 +13,7 @@ Cases:
   untwist-twisted   deform/untwist with its whole _init.node as the initial map (the handles of
                     untwist do not move, so deform/untwist alone is the rest shape itself)
   gen/<name>        problems written by build/bin/bench_generate_problem
-                    (geometry/generated_problems.h), feasible by construction: the fixed-boundary
+                    (tests/fixtures/generated_problems.h), feasible by construction: the fixed-boundary
                     hard class (every boundary vertex a handle at a twisted or bent and flattened
                     position, the interior tangled) and large deformations by handle slabs
 
@@ -165,7 +165,7 @@ def run_case(a, case, variant, work):
     if row['mode'] == 'submesh':
         m = rep['submesh']
         row['iterations'] = '%d in %d solves + %d' % (m['iterations'], m['solves'], stage)
-        if 'start untangling' in stages:
+        if stages.get('start untangling', {}).get('newton_steps'):
             row['iterations'] = ('untangle %d, ' % stages['start untangling']['newton_steps'] +
                                  row['iterations'])
         row['submesh'] = '%d rounds, %d solves, largest %d, %d rings' % (

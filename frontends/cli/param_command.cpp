@@ -188,6 +188,9 @@ int run_param_command(const ParamArguments& a) {
                                    {"max_distortion_after", d.max_distortion_after},
                                    {"iterations", d.iterations},
                                    {"outcome", to_string(d.outcome)},
+                                   {"termination", newton_ran(d.outcome)
+                                                       ? nlohmann::json(to_string(d.termination))
+                                                       : nlohmann::json(nullptr)},
                                    {"undone_degenerate", d.undone_degenerate}});
             }
             fallback["reason"] = r.fallback.describe_reason();

@@ -49,6 +49,7 @@ nlohmann::json stages_json(const StageTrace& stages) {
                                  {"outcome", to_string(r.outcome)},
                                  {"newton_steps", r.newton_steps},
                                  {"seconds", r.seconds}};
+        if (r.termination) record["termination"] = to_string(*r.termination);
         if (!r.figures.empty()) record["figures"] = r.figures;
         out.push_back(std::move(record));
     }

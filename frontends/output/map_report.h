@@ -15,8 +15,8 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
 
 nlohmann::json quality_json(const MapQuality& quality);
 
-/// The stages a run passed, in order: [{stage, outcome, newton_steps, seconds, figures}], the
-/// enums by their names (stage_trace.h).
+/// The stages a run passed, in order: [{stage, outcome, newton_steps, termination, seconds,
+/// figures}], the enums by their names (stage_trace.h); termination and figures when present.
 nlohmann::json stages_json(const StageTrace& stages);
 
 /// One row per assembly iteration of `result`: energy, E~_assembly, lambda, time, and from the

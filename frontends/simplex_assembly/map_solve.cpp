@@ -109,8 +109,14 @@ void start_from_initial_map(PreparedProblem<D>& prepared, const SimplexAssemblyO
         with_time_left(options, budget), observer.logger,
         VertexStageTerms<D>{in.fans, in.constraints, in.plugins, in.plugin_stage,
                             exponent_continuation<D>(prepared)});
+    // Why the recovered mesh was no start, for the record.
+    const std::string recovered_mesh = "the recovered mesh: " + to_string(vertex.outcome) +
+                                       (vertex.figures.empty() ? "" : " (" + vertex.figures + ")");
     if (from_initial.ran()) {
         from_initial.outcome = VertexStageOutcome::kRanFromInitialMap;
+        from_initial.figures = from_initial.figures.empty()
+                                   ? recovered_mesh
+                                   : recovered_mesh + "; " + from_initial.figures;
         recovered = from_initial.positions;
         vertex = std::move(from_initial);
         return;
@@ -126,6 +132,7 @@ void start_from_initial_map(PreparedProblem<D>& prepared, const SimplexAssemblyO
     recovered = candidate;
     vertex.positions = candidate;
     vertex.outcome = VertexStageOutcome::kInitialMapKept;
+    vertex.figures = recovered_mesh;
 }
 
 /// The whole mesh at once: the engine (its lambda schedule, section 4.4) with the hand-over of
@@ -204,6 +211,7 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
     AssemblyRun run = engine.run(schedule, hooks);
     StageRecord& assembled = result.stages.add(Stage::kAssembly, run.stop);
     assembled.newton_steps = run.newton.num_steps();
+    assembled.termination = run.newton.termination;
     assembled.seconds = run.time;
     if (run.stop == AssemblyStop::kHook) {
         assembled.figures = options.until_valid ? "the recovered map is valid"
@@ -348,38 +356,38 @@ SimplexAssemblyResult solve_prepared(PreparedProblem<D>& p, const SimplexAssembl
     std::ostringstream message;
     message << (result.success ? "success: " : "FAILED: ") << result.verification.describe()
             << ". ";
+    const std::optional<AssemblyStop> stop = result.stages.outcome<AssemblyStop>(Stage::kAssembly);
     if (result.mode == SolveMode::kSubmesh) {
         message << result.submesh.describe();
-    } else {
-        const StageRecord* assembly = result.stages.last(Stage::kAssembly);
-        if (result.assembled) {
-            message << "Assembled (E~ = " << result.final_assembly << ") after "
-                    << result.newton.num_steps() << " iterations";
-        } else if (assembly != nullptr) {
-            message << "Not assembled: E~ = " << result.final_assembly << " after "
-                    << result.newton.num_steps() << " iterations ("
-                    << (assembly->figures.empty() ? to_string(assembly->outcome)
-                                                  : assembly->figures)
-                    << ")";
-        }
+    } else if (result.assembled) {
+        message << "Assembled (E~ = " << result.final_assembly << ") after "
+                << result.newton.num_steps() << " iterations";
+    } else if (stop) {
+        message << "Not assembled: E~ = " << result.final_assembly << " after "
+                << result.newton.num_steps() << " iterations ("
+                << (*stop == AssemblyStop::kHook ? result.stages.last(Stage::kAssembly)->figures
+                    : *stop == AssemblyStop::kConvergedAtLambdaMax
+                        ? std::string("E converged at lambda_max")
+                        : to_string(result.newton.termination))
+                << ")";
     }
-    // The vertex stage of the driver's own mode; the fallback's comes after it.
+    // The vertex stages and the fallback, in the order they ran.
     for (const StageRecord& r : result.stages.records) {
         if (r.stage == Stage::kFallback) {
-            message << ". Then the fallback untangled in vertex variables: "
-                    << to_string(r.outcome);
-            if (!r.figures.empty()) message << " (" << r.figures << ")";
-            break;
+            message << ". Then the fallback untangled in vertex variables (" << r.figures
+                    << "): " << to_string(r.outcome);
+            continue;
         }
-        if (r.stage != Stage::kVertexStage) continue;
-        const VertexStageOutcome v = std::get<VertexStageOutcome>(r.outcome);
-        if (newton_ran(v)) {
-            message << ", then " << r.newton_steps << " in vertex variables ("
-                    << to_string(result.vertex_stage.termination) << ")";
-            if (v != VertexStageOutcome::kRan) message << "; " << to_string(v);
+        const auto* v = std::get_if<VertexStageOutcome>(&r.outcome);
+        if (r.stage != Stage::kVertexStage || v == nullptr) continue;
+        if (newton_ran(*v)) {
+            message << ", then " << r.newton_steps << " in vertex variables";
+            if (r.termination) message << " (" << to_string(*r.termination) << ")";
+            if (*v != VertexStageOutcome::kRan) message << "; " << to_string(*v);
         } else {
-            message << "; vertex stage " << to_string(v);
+            message << "; vertex stage: " << to_string(*v);
         }
+        if (!r.figures.empty()) message << " (" << r.figures << ")";
     }
     message << ".";
     result.message = message.str();

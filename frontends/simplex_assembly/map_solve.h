@@ -1,6 +1,6 @@
 #pragma once
 // Simplex Assembly (Fu and Liu 2016): an inversion-free map of a simplicial mesh with handles.
-// The map front-end, also the mesh driver under `sa param`, `sa deform` and `sa polycube`: a
+// The mesh driver, under `sa map`, `sa param`, `sa deform` and `sa polycube`: a
 // configuration of the engine (frontends/simplex_assembly/engine.h) by the mesh's simplices,
 // its edges and its handles.
 //

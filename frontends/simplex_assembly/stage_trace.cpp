@@ -58,8 +58,11 @@ const StageRecord* StageTrace::last(Stage stage) const {
 }
 
 bool StageTrace::vertex_stage_ran() const {
-    const std::optional<VertexStageOutcome> o = outcome<VertexStageOutcome>(Stage::kVertexStage);
-    return o && newton_ran(*o);
+    for (const StageRecord& r : records) {
+        const auto* o = std::get_if<VertexStageOutcome>(&r.outcome);
+        if (r.stage == Stage::kVertexStage && o != nullptr && newton_ran(*o)) return true;
+    }
+    return false;
 }
 
 std::string to_string(Stage stage) {

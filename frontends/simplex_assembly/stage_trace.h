@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "frontends/simplex_assembly/engine_options.h"
+#include "optim/newton_summary.h"
 
 namespace sa {
 
@@ -71,9 +72,11 @@ struct StageRecord {
     Stage stage = Stage::kAssembly;
     StageOutcome outcome;
     int newton_steps = 0;
+    std::optional<TerminationType> termination;  ///< how Newton stopped, when it ran
     double seconds = 0.0;
     /// The stage's figures in words, for the report and the summary (the exponent
-    /// continuation's rounds, the reason a hook gave, ...); empty when there are none.
+    /// continuation's rounds, the hand-over, the simplices beyond the exponent cap, ...); empty
+    /// when there are none.
     std::string figures;
 };
 
@@ -92,7 +95,7 @@ struct StageTrace {
         if (r == nullptr || !std::holds_alternative<Outcome>(r->outcome)) return std::nullopt;
         return std::get<Outcome>(r->outcome);
     }
-    /// Whether Newton ran in the last vertex stage.
+    /// Whether Newton ran in any vertex stage (the driver's or the fallback's).
     bool vertex_stage_ran() const;
 };
 

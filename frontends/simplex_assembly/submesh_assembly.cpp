@@ -166,6 +166,9 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
     if (start.untangle) {
         StageRecord& r = result.stages.add(Stage::kStartUntangle, *start.untangle);
         r.newton_steps = start.untangle_iterations;
+        r.seconds = start.untangle_seconds;
+        if (*start.untangle == UntangleOutcome::kNotUntangled)
+            r.figures = to_string(start.untangle_stop);
     }
     stats.start_bad = static_cast<Index>(bad.size());
     Index near_bound = 0;
@@ -396,8 +399,9 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
         const Eigen::MatrixXd moved = p.to_original(vertex.positions);
         for (Index i = 0; i < nv; ++i)
             if (!local_fixed[i]) positions.row(sub.vertices[i]) = moved.row(i);
-        result.times.vertex_stage += vertex_watch.seconds();
-        record_vertex_stage(result.stages, vertex, vertex_watch.seconds());
+        const double seconds = vertex_watch.seconds();
+        result.times.vertex_stage += seconds;
+        record_vertex_stage(result.stages, vertex, seconds);
     }
     result.positions = positions;
 }

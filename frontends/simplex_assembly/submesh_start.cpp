@@ -14,6 +14,7 @@
 #include "geometry/map_quality.h"
 #include "geometry/submesh.h"
 #include "optim/anderson_acceleration.h"
+#include "optim/stopwatch.h"
 
 namespace sa {
 
@@ -40,9 +41,12 @@ template <int D>
 void untangle_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& options,
                     const TimeBudget& budget, const Logger& logger, SubmeshStart& start) {
     const Eigen::MatrixXd from = (start.positions.rowwise() - p.map_center) * p.scale;
+    Stopwatch watch;
     const UntangleResult u = untangle_prepared<D>(p, options, budget, from, logger);
     start.untangle_iterations = u.iterations;
     start.untangle = u.outcome;
+    start.untangle_stop = u.stop;
+    start.untangle_seconds = watch.seconds();
     // Simplices beyond the barrier's exponent cap are not bad here: what the untangling left
     // there, which minimized its own distortion, is mostly what the handles force (on
     // tlc/armadillo-598, 81 simplices with a free vertex, next to 83 whose vertices are all

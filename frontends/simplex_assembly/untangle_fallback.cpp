@@ -69,20 +69,22 @@ bool untangle_fallback(PreparedProblem<D>& p, const SimplexAssemblyOptions& opti
         untangle_prepared<D>(p, options, budget, from_result ? reached : initial, observer.logger);
     Eigen::MatrixXd positions = u.positions;
     const Index after = invalid_simplices<D>(p, positions);
-    StageRecord& record = result.stages.add(
-        Stage::kFallback, after < before ? FallbackOutcome::kReplaced : FallbackOutcome::kNoBetter);
-    record.newton_steps = u.iterations;
+    StageRecord record{
+        .stage = Stage::kFallback,
+        .outcome = after < before ? FallbackOutcome::kReplaced : FallbackOutcome::kNoBetter,
+        .newton_steps = u.iterations};
+    if (u.iterations > 0) record.termination = u.newton.termination;
     record.figures = "from the " + std::string(from_result ? "result" : "initial map") + ", " +
                      std::to_string(u.iterations) + " Newton steps, " + to_string(u.outcome) +
-                     ", " + std::to_string(after) + " bad simplices against " +
-                     std::to_string(before);
-    if (after >= before) {
-        record.seconds = watch.seconds();
-        return false;
-    }
+                     (u.untangled ? "" : ": " + to_string(u.stop)) + ", " + std::to_string(after) +
+                     " bad simplices against " + std::to_string(before);
     record.seconds = watch.lap();
+    result.stages.records.push_back(record);
+    if (after >= before) return false;
     result.times.optimization += record.seconds;
-    if (u.untangled && options.vertex_stage && !options.until_valid && !budget.exhausted()) {
+    if (u.untangled && options.vertex_stage && !options.until_valid && budget.exhausted()) {
+        result.stages.add(Stage::kVertexStage, VertexStageOutcome::kSkippedTimeLimit);
+    } else if (u.untangled && options.vertex_stage && !options.until_valid) {
         const VertexStage vertex = run_vertex_stage<D>(
             p.mesh, p.frames, p.assembly.energies, positions, fixed_vertices<D>(p),
             with_time_left(options, budget), observer.logger,

@@ -93,6 +93,7 @@ VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOp
             o, observer.logger, VertexStageTerms<D>{prepared.assembly.fans, {}});
         round.iterations = v.newton.num_steps();
         round.outcome = v.outcome;
+        round.termination = v.newton.termination;
         if (v.ran()) {
             const Index before = degenerate(x);
             const Index after = before == 0 ? degenerate(v.positions) : 0;

@@ -39,6 +39,7 @@ struct DescentRound {
     double max_distortion_after = 0;
     int iterations = 0;
     VertexStageOutcome outcome = VertexStageOutcome::kRan;
+    TerminationType termination = TerminationType::kConverged;  ///< when Newton ran
     /// Its result had degenerate simplices, its start none: the round was undone (above).
     Index undone_degenerate = 0;
 };

@@ -224,7 +224,8 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
     };
     const TimeBudget budget(options.max_time_seconds);
     VertexStage result;
-    result.outcome = VertexStageOutcome::kSkippedTimeLimit;  // until a round runs
+    // Until a round runs: options.max_iterations >= 1, so only the time limit stops the first.
+    result.outcome = VertexStageOutcome::kSkippedTimeLimit;
     result.positions = start;
     double best = energy_at_s(start);
     Eigen::MatrixXd x = start;
@@ -310,7 +311,10 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
 
 void record_vertex_stage(StageTrace& trace, const VertexStage& stage, double seconds) {
     StageRecord& r = trace.add(Stage::kVertexStage, stage.outcome);
-    r.newton_steps = stage.ran() ? stage.newton.num_steps() : 0;
+    if (stage.ran()) {
+        r.newton_steps = stage.newton.num_steps();
+        r.termination = stage.newton.termination;
+    }
     r.seconds = seconds;
     r.figures = stage.figures;
 }

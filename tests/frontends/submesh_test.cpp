@@ -109,6 +109,7 @@ TEST(SubmeshMode, TheStartSpreadsALargeHandleRotation) {
     EXPECT_EQ(a.submesh.start.iterate, StartIterate::kLocalGlobal) << a.submesh.start.describe();
     EXPECT_FALSE(a.submesh.start.similarity);
     EXPECT_TRUE(a.submesh.start.from_handle_rotations) << a.submesh.start.describe();
+    EXPECT_FALSE(a.submesh.start.untangled);
     EXPECT_EQ(a.submesh.solves, 0);
     EXPECT_TRUE(a.stages.vertex_stage_ran()) << a.message;  // the start moved every vertex
 

@@ -11,7 +11,7 @@
 #include "geometry/mesh_generators.h"
 #include "geometry/mesh_topology.h"
 #include "geometry/tet_boundary.h"
-#include "tests/fixtures/polycube_fixtures.h"
+#include "tests/fixtures/voxel_meshes.h"
 
 namespace sa {
 namespace {

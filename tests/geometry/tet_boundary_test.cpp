@@ -6,7 +6,7 @@
 
 #include "geometry/mesh_topology.h"
 #include "optim/errors.h"
-#include "tests/fixtures/polycube_fixtures.h"
+#include "tests/fixtures/voxel_meshes.h"
 
 namespace sa {
 namespace {

@@ -49,7 +49,9 @@ struct SubmeshStart {
     int rejected = 0;             ///< accelerated points replaced by plain steps
     bool untangled = false;       ///< from the untangling (untangle.h): see bad_simplices()
     int untangle_iterations = 0;  ///< Newton steps of the untangling start (untangle.h), if run
-    std::optional<UntangleOutcome> untangle;  ///< how it ended, when it ran
+    std::optional<UntangleOutcome> untangle;                ///< how it ended, when it ran
+    AssemblyStop untangle_stop = AssemblyStop::kConverged;  ///< the engine's reason
+    double untangle_seconds = 0.0;
 };
 
 /// Simplices whose linear parts A (normalized map) the barrier rejects (inverted, at or over the

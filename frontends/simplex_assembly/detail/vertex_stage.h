@@ -49,7 +49,9 @@ struct VertexStage {
     NewtonSummary newton;
     AssemblyStop stop = AssemblyStop::kConverged;  ///< the engine's reason, when it ran
     int continuation_rounds = 0;  ///< rounds of the exponent continuation (0: a single run)
-    std::string figures;          ///< the continuation's rounds in words (empty without)
+    /// The continuation's rounds, the plugin that could not project the start or the simplices
+    /// beyond the exponent cap, in words (empty when there is nothing to say).
+    std::string figures;
 };
 
 /// The per-simplex energies at another exponent s of E_C, for the continuation.
