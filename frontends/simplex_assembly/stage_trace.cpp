@@ -21,6 +21,8 @@ constexpr EnumName<UntangleOutcome> kUntangleNames[] = {
 constexpr EnumName<VertexStageOutcome> kVertexStageNames[] = {
     {VertexStageOutcome::kRan, "ran"},
     {VertexStageOutcome::kRanStartKept, "ran; the start is kept (no lower energy at s)"},
+    {VertexStageOutcome::kRanUndone,
+     "ran; undone: its result had degenerate simplices, its start none"},
     {VertexStageOutcome::kRanFromInitialMap,
      "ran from the initial map (the recovered mesh was not valid)"},
     {VertexStageOutcome::kInitialMapKept,
@@ -43,6 +45,7 @@ constexpr EnumName<FallbackOutcome> kFallbackNames[] = {
 
 bool newton_ran(VertexStageOutcome outcome) {
     return outcome == VertexStageOutcome::kRan || outcome == VertexStageOutcome::kRanStartKept ||
+           outcome == VertexStageOutcome::kRanUndone ||
            outcome == VertexStageOutcome::kRanFromInitialMap;
 }
 

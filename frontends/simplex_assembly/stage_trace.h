@@ -44,6 +44,8 @@ enum class UntangleOutcome {
 enum class VertexStageOutcome {
     kRan,                     ///< ran from the recovered mesh (or the stage's given start)
     kRanStartKept,            ///< ran, but found no lower energy at the exponent asked for
+    kRanUndone,               ///< ran, but its result had degenerate simplices and its start
+                              ///< none: the start is kept
     kRanFromInitialMap,       ///< the recovered mesh was no valid start: ran from the initial map
     kInitialMapKept,          ///< neither was a valid start; the initial map, inversion-free but
                               ///< beyond what the barrier represents, is kept

@@ -14,12 +14,6 @@ namespace sa {
 
 namespace {
 
-/// Rounds of each continuation at most.
-constexpr int kMaxRounds = 30;
-/// A round that lowers the largest distortion by less than this share ends a continuation: the
-/// next round's exponent or bound would hardly differ.
-constexpr double kStall = 0.01;
-
 template <int D>
 VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOptions& options,
                             const SimplexAssemblyObserver& observer) {
@@ -58,60 +52,49 @@ VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOp
     };
     result.times.setup += stage.lap();
 
-    auto degenerate = [&](const Eigen::MatrixXd& positions) {
-        return map_quality<D>(linear_parts<D>(prepared.mesh, prepared.frames, positions),
-                              prepared.frames.volume)
-            .degenerate;
-    };
-    // A round whose result has degenerate simplices (by the verification's relative rule) while
-    // its start had none is undone, and the continuation ends: an energy whose minimizers are not
-    // representable (the conformal map of a nearly closed or strongly stretched surface shrinks
-    // parts of it exponentially) would otherwise turn a valid start into a failed result.
+    // Each round is a run of the vertex stage at one bound, with E_C's exponent continuation
+    // (vertex_stage.h): its rounds raise s to options.s; a run that left degenerate simplices
+    // where its start had none was undone there, and ends the descent.
     bool undone = false;
-    auto run_round = [&](double s, double bound) {
-        SimplexEnergyOptions e = base;
-        e.barrier.s = s;
-        e.barrier.bound = bound;
-        const SimplexEnergy<D> energy(e, prepared.frames.volume, references);
-        DescentRound round;
-        round.s = s;
-        round.bound = bound;
-        round.max_distortion_before = largest_distortion(x);
+    auto run_round = [&](double bound) {
+        auto energies_at = [&](double s) {
+            SimplexEnergyOptions e = base;
+            e.barrier.s = s;
+            e.barrier.bound = bound;
+            return std::vector<std::shared_ptr<const SimplexTerm<D>>>{simplex_term<D>(
+                "simplex energy", SimplexEnergy<D>(e, prepared.frames.volume, references))};
+        };
+        ExponentContinuation<D> continuation;
+        continuation.s = options.s;
+        continuation.distortion = [&measure](const Mat<D>& A) {
+            return measure.barrier_distortion(A);
+        };
+        continuation.energies = energies_at;
         char line[200];
         std::snprintf(line, sizeof line,
-                      "vertex descent round %d: s = %.4g, bound %.4g, largest distortion %.4g",
-                      int(out.rounds.size()), s, bound, round.max_distortion_before);
+                      "vertex descent round %d: bound %.4g, largest distortion %.4g",
+                      int(out.rounds.size()), bound, largest_distortion(x));
         log_line(observer.logger, line);
         SimplexAssemblyOptions o = with_time_left(options, budget);
-        o.s = s;
         o.bound = bound;
-        // e^{s d} = 1 + s d + ...: for s << 1 the part of E that moves is s times smaller, and so
-        // must be the relative change that ends the round.
-        o.energy_tolerance = options.energy_tolerance * std::min(1.0, s);
-        VertexStage v = run_vertex_stage<D>(
-            prepared.mesh, prepared.frames, {simplex_term<D>("simplex energy", energy)}, x, fixed,
-            o, observer.logger, VertexStageTerms<D>{prepared.assembly.fans, {}});
-        round.iterations = v.newton.num_steps();
-        round.outcome = v.outcome;
-        round.termination = v.newton.termination;
-        if (v.ran()) {
-            const Index before = degenerate(x);
-            const Index after = before == 0 ? degenerate(v.positions) : 0;
-            if (after > 0) {
-                undone = true;
-                round.undone_degenerate = after;
-                log_line(observer.logger, "vertex descent: round undone: it left " +
-                                              std::to_string(after) +
-                                              " degenerate simplices, its start none");
-            } else {
-                x = std::move(v.positions);
-            }
+        const VertexStage v = run_vertex_stage<D>(
+            prepared.mesh, prepared.frames, energies_at(options.s), x, fixed, o, observer.logger,
+            VertexStageTerms<D>{prepared.assembly.fans, {}, {}, {}, continuation});
+        for (const ContinuationRound& r : v.rounds) {
+            out.rounds.push_back(DescentRound{.bound = bound,
+                                              .s = r.s,
+                                              .max_distortion_before = r.max_distortion_before,
+                                              .max_distortion_after = r.max_distortion_after,
+                                              .iterations = r.iterations,
+                                              .outcome = r.outcome,
+                                              .termination = r.termination,
+                                              .undone_degenerate = r.undone_degenerate});
+            undone |= r.outcome == VertexStageOutcome::kRanUndone;
         }
-        round.max_distortion_after = largest_distortion(x);
+        if (v.ran()) x = v.positions;
         record_vertex_stage(result.stages, v, v.newton.times.total);
-        result.vertex_stage = std::move(v.newton);
-        out.rounds.push_back(round);
-        return round.max_distortion_after;
+        result.vertex_stage = v.newton;
+        return largest_distortion(x);
     };
 
     if (out.start_valid) {
@@ -119,24 +102,17 @@ VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOp
         double d = largest_distortion(x);
         const double bound = options.bound;
         const double first_bound = d < bound ? bound : kInfinity;
-        for (int r = 0; r < kMaxRounds && !budget.exhausted(); ++r) {
-            const double s = std::min(options.s, kExponentRange / d);
-            const double after = run_round(s, first_bound);
-            const bool stalled = !(after < (1.0 - kStall) * d);
-            d = after;
-            if (s >= options.s || stalled || undone) break;
-        }
+        d = run_round(first_bound);
         // The bound's continuation, for a start that was over it.
         if (bound < kInfinity && first_bound == kInfinity) {
-            for (int r = 0; r < kMaxRounds && d >= bound && !undone && !budget.exhausted(); ++r) {
-                const double after =
-                    run_round(std::min(options.s, kExponentRange / d), d + 0.1 * (d - 1.0));
-                const bool stalled = !(after < (1.0 - kStall) * d);
+            for (int r = 0; r < kContinuationRounds && d >= bound && !undone && !budget.exhausted();
+                 ++r) {
+                const double after = run_round(d + 0.1 * (d - 1.0));
+                const bool stalled = !(after < (1.0 - kContinuationStall) * d);
                 d = after;
                 if (stalled) break;
             }
-            if (d < bound && !undone && !budget.exhausted())
-                run_round(std::min(options.s, kExponentRange / d), bound);
+            if (d < bound && !undone && !budget.exhausted()) run_round(bound);
         }
     }
     result.times.vertex_stage += stage.lap();

@@ -9,20 +9,19 @@
 // Two continuations make the start usable whatever its distortion:
 //  - the exponent: E_C = e^{s d} (Eq. 10) of a start with d in the hundreds (Tutte maps of meshes
 //    with sliver triangles) overflows the Hessian's range (e^{125} at d = 125: factorization
-//    fails). Each round takes s_r = min(s, kExponentRange / d_max), d_max the largest distortion
-//    at its start, so the worst simplex's barrier is at most e^{kExponentRange} times a perfect
-//    one's, and runs to convergence; the next round raises s_r as d_max falls, until s_r = s (the
-//    energy asked for). Fu et al. 2015 note AMIPS's sensitivity to s on highly distorted starts
-//    (the paper, section 5.1): this is the same exponent, raised gradually.
+//    fails). Every round below is a run of the vertex stage with its exponent continuation
+//    (vertex_stage.h: rounds at s_r = min(s, kExponentRange / (d_max - d_min)), raised as the
+//    spread of distortions falls, until s_r = s). Fu et al. 2015 note AMIPS's sensitivity to s on
+//    highly distorted starts (the paper, section 5.1): this is the same exponent, raised gradually.
 //  - the bound: a start over the bound K cannot enter the bounded barrier e^{s d} / (K - d).
 //    The descent first runs unbounded; then, while d_max >= K, rounds with the bound
 //    K_r = d_max + (d_max - 1) / 10 lower d_max (the paper's optimal-bound rounds, section 5.1,
 //    with room above the current maximum so that the start is inside); the last round takes K.
 //    If d_max stops falling first, the result is valid but over the bound, and says so.
-// A round whose result has degenerate simplices (the verification's relative rule) while its start
-// had none is undone and ends the descent: energies whose minimizers are not representable in
-// doubles (conformal maps of long or nearly closed surfaces shrink parts by 1e14 and more) cannot
-// turn a valid start into a failed result.
+// A run whose result has degenerate simplices (the verification's relative rule) while its start
+// had none is undone by the vertex stage and ends the descent: energies whose minimizers are not
+// representable in doubles (conformal maps of long or nearly closed surfaces shrink parts by 1e14
+// and more) cannot turn a valid start into a failed result.
 
 #include <string>
 #include <vector>
@@ -31,10 +30,11 @@
 
 namespace sa {
 
-/// One round of the descent.
+/// One round of the descent: a round of the vertex stage's exponent continuation (or its single
+/// run) at one bound.
 struct DescentRound {
-    double s = 1.0;                    ///< the exponent used
     double bound = kInfinity;          ///< the bound used
+    double s = 1.0;                    ///< the exponent used
     double max_distortion_before = 0;  ///< d_max at the round's start (the barrier's measure)
     double max_distortion_after = 0;
     int iterations = 0;
@@ -53,11 +53,6 @@ struct VertexDescentResult {
     /// Degenerate simplices (by the verification's relative rule) may remain in the result.
     bool start_valid = false;
 };
-
-/// The worst simplex's barrier relative to a perfect one's, as a power of e, at the start of a
-/// round. Measured on generated disks with sliver triangles (BENCHMARKS.md, "Robustness"):
-/// ranges of 10 to 30 converge, 50 leaves the first factorization failing.
-inline constexpr double kExponentRange = 20.0;
 
 /// Every simplex of `problem.initial` must be positively oriented (otherwise nothing runs:
 /// start_valid is false and the result is the start, reported as failed). Handles, anchors, E_m's

@@ -6,18 +6,12 @@
 
 #include "energies/boundary_angle_energy.h"
 #include "frontends/simplex_assembly/engine.h"
-#include "frontends/simplex_assembly/vertex_descent.h"
 #include "geometry/map_quality.h"
 #include "optim/time_budget.h"
 
 namespace sa {
 
 namespace {
-
-/// Rounds of the exponent's continuation at most (as vertex_descent.cpp).
-constexpr int kMaxRounds = 30;
-/// A round that lowers the largest distortion by less than this share ends the continuation.
-constexpr double kStall = 0.01;
 
 /// One run of the engine on `energies` from `start`.
 template <int D>
@@ -175,8 +169,6 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
                              const SimplexAssemblyOptions& options, const Logger& logger,
                              const VertexStageTerms<D>& terms) {
     const ExponentContinuation<D>& c = terms.exponent;
-    if (!c.energies)
-        return run_once<D>(mesh, frames, energies, start, fixed, options, logger, terms);
     // The smallest and largest barrier distortion of a simplex with a free vertex (the others
     // are constant): the per-simplex Hessians span about e^{s (largest - smallest)}.
     std::vector<Index> moving;
@@ -191,6 +183,7 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
     };
     auto distortion_range = [&](const Eigen::MatrixXd& x) {
         Range r;
+        if (!c.distortion) return r;
         for (Index s : moving) {
             Eigen::Matrix<double, D, D + 1> corners;
             for (int k = 0; k <= D; ++k)
@@ -201,19 +194,59 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
         }
         return r;
     };
+    auto degenerate = [&](const Eigen::MatrixXd& x) {
+        return map_quality<D>(linear_parts<D>(mesh, frames, x.leftCols(D)), frames.volume)
+            .degenerate;
+    };
+    // One run of Newton from x, undone when it leaves degenerate simplices where x had none.
+    auto run = [&](const std::vector<std::shared_ptr<const SimplexTerm<D>>>& at, double s,
+                   const Eigen::MatrixXd& x, const SimplexAssemblyOptions& o) {
+        VertexStage v = run_once<D>(mesh, frames, at, x, fixed, o, logger, terms);
+        ContinuationRound round;
+        round.s = s;
+        round.max_distortion_before = distortion_range(x).largest;
+        round.outcome = v.outcome;
+        if (v.ran()) {
+            round.iterations = v.newton.num_steps();
+            round.termination = v.newton.termination;
+            const Index after = degenerate(x) == 0 ? degenerate(v.positions) : 0;
+            if (after > 0) {
+                v.positions = x;
+                v.outcome = round.outcome = VertexStageOutcome::kRanUndone;
+                round.undone_degenerate = after;
+                log_line(logger, "vertex stage: undone: it left " + std::to_string(after) +
+                                     " degenerate simplices, its start none");
+            }
+        }
+        round.max_distortion_after = distortion_range(v.positions).largest;
+        v.rounds.push_back(round);
+        return v;
+    };
     Range d = distortion_range(start);
     // Within the range a factorization handles: one run. So too when the start is not valid, or
-    // when a simplex is beyond the barrier's exponent cap at s and some vertex is fixed (run_once
-    // skips them and says why): there the handles can force it (tlc/armadillo-598, where
-    // untangle_prepared() stops below the cap otherwise), and no exponent makes the barrier lower
-    // such a simplex. With no vertex fixed nothing forces it (an assembly that recovered a mesh
-    // with one very distorted tetrahedron, as PolyCube's on robustPolycube/cup): the rounds at a
-    // lower s, below the cap, lower it.
-    const bool any_fixed = std::find(fixed.begin(), fixed.end(), 1) != fixed.end();
-    const bool beyond_cap = !(c.s * d.largest <= kBarrierExponentCap);
-    if (!std::isfinite(d.largest) || !(c.s * d.spread() > kExponentRange) ||
-        (beyond_cap && any_fixed))
-        return run_once<D>(mesh, frames, energies, start, fixed, options, logger, terms);
+    // when a simplex beyond the barrier's exponent cap at s has a fixed vertex (run_once skips
+    // the stage and says why): fixed vertices can force its distortion (the handles of
+    // tlc/armadillo-598's fixed boundary, where untangle_prepared() stops below the cap
+    // otherwise), and no exponent makes the barrier lower such a simplex. Nothing forces one
+    // whose vertices are all free (an assembly that recovered a mesh with one very distorted
+    // tetrahedron, as PolyCube's on robustPolycube/cup; a Tutte start's slivers away from the
+    // anchored simplex of vertex_descent.h): the rounds at a lower s, below the cap, lower it.
+    auto beyond_cap_at_fixed_vertex = [&] {
+        for (Index s : moving) {
+            bool at_fixed = false;
+            for (int k = 0; k <= D; ++k) at_fixed |= fixed[mesh.simplices(s, k)] != 0;
+            if (!at_fixed) continue;
+            Eigen::Matrix<double, D, D + 1> corners;
+            for (int k = 0; k <= D; ++k)
+                corners.col(k) = start.row(mesh.simplices(s, k)).leftCols(D).transpose();
+            if (!(c.s * c.distortion(linear_part<D>(frames, s, corners)) <= kBarrierExponentCap))
+                return true;
+        }
+        return false;
+    };
+    if (!c.energies || !std::isfinite(d.largest) || !(c.s * d.spread() > kExponentRange) ||
+        (!(c.s * d.largest <= kBarrierExponentCap) && beyond_cap_at_fixed_vertex()))
+        return run(energies, c.energies ? c.s : options.s, start, options);
 
     // The energy asked for, on the whole mesh: what the best iterate is judged by.
     auto energy_at_s = [&](const Eigen::MatrixXd& x) {
@@ -233,9 +266,8 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
     double s_first = -1.0, s_last = -1.0;
     int rounds = 0;
     bool last_round = false, improved = false;
-    // The rounds share the stage's iteration limit.
-    int steps = 0;
-    while (!budget.exhausted() && steps < options.max_iterations) {
+    // Each round runs to convergence or to the iteration limit; the rounds share the time limit.
+    while (!budget.exhausted()) {
         const double s = last_round ? c.s : std::min(c.s, kExponentRange / d.spread());
         char line[160];
         std::snprintf(line, sizeof line,
@@ -245,15 +277,15 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
         log_line(logger, line);
         SimplexAssemblyOptions o = with_time_left(options, budget);
         o.s = s;
-        o.max_iterations = options.max_iterations - steps;
         // e^{s d} = 1 + s d + ...: for s << 1 the part of E that moves is s times smaller, and so
-        // must be the relative change that ends the round (as vertex_descent.cpp).
+        // must be the relative change that ends the round.
         o.energy_tolerance = options.energy_tolerance * std::min(1.0, s);
-        VertexStage v = run_once<D>(mesh, frames, c.energies(s), x, fixed, o, logger, terms);
+        VertexStage v = run(c.energies(s), s, x, o);
+        result.rounds.push_back(v.rounds.back());
         ++rounds;
-        steps += v.newton.num_steps();
         if (s_first < 0.0) s_first = s;
         s_last = s;
+        const bool undone = v.outcome == VertexStageOutcome::kRanUndone;
         if (v.ran()) {
             result.outcome = VertexStageOutcome::kRan;
             result.stop = v.stop;
@@ -284,14 +316,17 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
             result.outcome = v.outcome;
             result.figures = v.figures;
         }
-        if (last_round || !v.ran()) break;
+        if (last_round || !v.ran() || undone) {
+            if (undone && !improved) result.outcome = VertexStageOutcome::kRanUndone;
+            break;
+        }
         const Range after = distortion_range(x);
-        const bool stalled = !(after.spread() < (1.0 - kStall) * d.spread());
+        const bool stalled = !(after.spread() < (1.0 - kContinuationStall) * d.spread());
         d = after;
         if (s >= c.s) break;
         // The last round takes the exponent asked for, from the best iterate so far (the start
         // when the largest distortion is one the handles force: then this is the single run).
-        if (stalled || rounds + 1 >= kMaxRounds) {
+        if (stalled || rounds + 1 >= kContinuationRounds) {
             last_round = true;
             x = result.positions;
         }
@@ -304,7 +339,8 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
                       rounds, s_first, s_last, d_start, distortion_range(result.positions).largest);
         result.continuation_rounds = rounds;
         result.figures = result.figures.empty() ? line : result.figures + "; " + line;
-        if (result.ran() && !improved) result.outcome = VertexStageOutcome::kRanStartKept;
+        if (result.outcome == VertexStageOutcome::kRan && !improved)
+            result.outcome = VertexStageOutcome::kRanStartKept;
     }
     return result;
 }

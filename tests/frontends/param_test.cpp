@@ -312,6 +312,23 @@ TEST(Parameterization, FallsBackToTutteWhenTheLscmStartFoldsBeyondRepair) {
     expect_valid_layout(mesh, o.uv);
 }
 
+// A finer ball: the Tutte start's slivers have s d ~ 600, beyond the barrier's exponent cap,
+// and no fixed vertex forces them (only one anchored triangle is fixed): the exponent
+// continuation lowers them (a stage that skipped such a start kept the Tutte map, distortion
+// ~1200).
+TEST(Parameterization, TheFallbackLowersSliversBeyondTheExponentCap) {
+    const SimplicialMesh mesh = flat_ball_with_slivers(12);
+    const ParameterizationResult r =
+        parameterize(mesh, "flat ball", nullptr, InitialMap::kLscm, conformal_options());
+    EXPECT_TRUE(r.success) << r.message;
+    ASSERT_TRUE(r.fallback.start.has_value()) << r.message;
+    ASSERT_GT(r.fallback.rounds.size(), 1u);
+    EXPECT_GT(r.fallback.rounds.front().max_distortion_before, 500.0);
+    EXPECT_LT(r.fallback.rounds.front().s, 0.1);
+    EXPECT_LT(r.solve.verification.max_distortion, 20.0) << r.message;
+    expect_valid_layout(mesh, r.uv);
+}
+
 TEST(Parameterization, AnUnreachableBoundIsReportedWithAMapWithoutFoldovers) {
     const SimplicialMesh mesh = flat_ball_with_slivers(8);
     ParameterizationOptions options = conformal_options();

@@ -19,11 +19,19 @@
 // returned as it was). With an ExponentContinuation (the built-in E_C) the stage runs rounds at
 // s_r = min(s, kExponentRange / (d_max - d_min)), d_max and d_min the largest and smallest barrier
 // distortion of a simplex with a free vertex at the round's start (the Hessians span about
-// e^{s_r (d_max - d_min)}), each to convergence, raising s_r as the spread falls until s_r = s
-// (vertex_descent.h raises s the same way from a Tutte start, on d_max alone); a round that lowers
-// the spread by less than 1% ends the continuation, and a last round at s follows from the best
-// iterate so far. The rounds share the stage's iteration and time limits. The result is the iterate
-// with the lowest energy at the requested s (never worse than the start).
+// e^{s_r (d_max - d_min)}), each to convergence, raising s_r as the spread falls until s_r = s;
+// a round that lowers the spread by less than 1% ends the continuation, and a last round at s
+// follows from the best iterate so far. Each round has the stage's iteration limit; they share
+// its time limit.
+// The result is the iterate with the lowest energy at the requested s (never worse than the
+// start). This is the one exponent continuation: the mesh driver's vertex stage and the descent
+// from a Tutte start (vertex_descent.h, whose bound rounds each run it) both go through it.
+//
+// A run (a round, or the single run without a continuation) whose result has degenerate
+// simplices (the verification's relative rule) while its start had none is undone and ends the
+// stage: an energy whose minimizers are not representable in doubles (the conformal map of a
+// nearly closed or strongly stretched surface shrinks parts of it exponentially) cannot turn a
+// valid start into a map the verification rejects.
 
 #include <Eigen/Core>
 #include <functional>
@@ -42,6 +50,27 @@
 
 namespace sa {
 
+/// The worst simplex's barrier relative to a perfect one's, as a power of e, at the start of a
+/// round. Measured on generated disks with sliver triangles (BENCHMARKS.md, "Robustness"):
+/// ranges of 10 to 30 converge, 50 leaves the first factorization failing.
+inline constexpr double kExponentRange = 20.0;
+/// Rounds of a continuation at most.
+inline constexpr int kContinuationRounds = 30;
+/// A round that lowers what a continuation follows (the spread of distortions, the largest
+/// distortion) by less than this share ends it: the next round would hardly differ.
+inline constexpr double kContinuationStall = 0.01;
+
+/// One run of Newton in the stage: the single run, or a round of the continuation.
+struct ContinuationRound {
+    double s = 1.0;                      ///< E_C's exponent
+    double max_distortion_before = 0.0;  ///< the largest barrier distortion at its start
+    double max_distortion_after = 0.0;   ///< and of what it kept
+    int iterations = 0;                  ///< Newton steps
+    VertexStageOutcome outcome = VertexStageOutcome::kRan;
+    TerminationType termination = TerminationType::kConverged;  ///< when Newton ran
+    Index undone_degenerate = 0;  ///< kRanUndone: the degenerate simplices it left
+};
+
 struct VertexStage {
     VertexStageOutcome outcome = VertexStageOutcome::kSkippedInfeasibleStart;
     bool ran() const { return newton_ran(outcome); }
@@ -49,6 +78,7 @@ struct VertexStage {
     NewtonSummary newton;
     AssemblyStop stop = AssemblyStop::kConverged;  ///< the engine's reason, when it ran
     int continuation_rounds = 0;  ///< rounds of the exponent continuation (0: a single run)
+    std::vector<ContinuationRound> rounds;  ///< every run, in order
     /// The continuation's rounds, the plugin that could not project the start or the simplices
     /// beyond the exponent cap, in words (empty when there is nothing to say).
     std::string figures;
