@@ -1,6 +1,7 @@
 // A user's program on the installed front-ends: a grid with folded triangles repaired by Simplex
 // Assembly, written as VTU (through the installed VTK plugin) and PNG (the picture plugin).
-// Exits 0 when the map is verified inversion-free and both files are written.
+// Exits 0 when the map is verified inversion-free, its stages are recorded and both files are
+// written.
 #include <filesystem>
 #include <iostream>
 
@@ -25,6 +26,9 @@ int main(int argc, char** argv) {
     const sa::SimplexAssemblyResult result = sa::run_simplex_assembly(problem, {});
     std::cout << "inverted before " << result.initial_quality.inverted << ", after "
               << result.final_quality.inverted << ": " << result.message << '\n';
+    for (const sa::StageRecord& stage : result.stages.records)
+        std::cout << "  " << sa::to_string(stage.stage) << ": " << sa::to_string(stage.outcome)
+                  << '\n';
     const std::string vtu = (out / "map.vtu").string(), png = (out / "map.png").string();
     sa::write_map_result(vtu, problem, result);
     Eigen::VectorXd values(problem.mesh.num_simplices());
@@ -32,5 +36,8 @@ int main(int argc, char** argv) {
         values[f] = result.final_quality.per_simplex[f].conformal;
     sa::write_layout_png(png, result.positions, problem.mesh.simplices, values, {});
     const bool written = std::filesystem::file_size(vtu) > 0 && std::filesystem::file_size(png) > 0;
-    return result.success && result.initial_quality.inverted > 0 && written ? 0 : 1;
+    return result.success && result.initial_quality.inverted > 0 &&
+                   !result.stages.records.empty() && written
+               ? 0
+               : 1;
 }
