@@ -8,6 +8,28 @@
 
 namespace sa {
 
+namespace {
+
+/// map_quality()'s rule for a degenerate simplex, given the largest |det A_j| vol_j.
+bool degenerate(double det, double volume, double largest) {
+    return !std::isfinite(det) || std::abs(det) * volume <= 1e-14 * largest;
+}
+
+}  // namespace
+
+template <int D>
+Index count_degenerate(const std::vector<Mat<D>>& A, const std::vector<double>& rest_volume) {
+    const Index n = static_cast<Index>(A.size());
+    std::vector<double> det(n);
+    tbb::parallel_for(Index(0), n, [&](Index i) { det[i] = A[i].determinant(); });
+    double largest = 0.0;
+    for (Index i = 0; i < n; ++i)
+        if (std::isfinite(det[i])) largest = std::max(largest, std::abs(det[i]) * rest_volume[i]);
+    Index count = 0;
+    for (Index i = 0; i < n; ++i) count += degenerate(det[i], rest_volume[i], largest);
+    return count;
+}
+
 template <int D>
 MapQuality map_quality(const std::vector<Mat<D>>& A, const std::vector<double>& rest_volume) {
     MapQuality q;
@@ -36,8 +58,7 @@ MapQuality map_quality(const std::vector<Mat<D>>& A, const std::vector<double>& 
     double weight = 0.0;
     for (Index i = 0; i < n; ++i) {
         SimplexQuality& s = q.per_simplex[i];
-        if (!s.degenerate && std::abs(s.det) * rest_volume[i] <= 1e-14 * largest)
-            s.degenerate = true;
+        if (!s.degenerate && degenerate(s.det, rest_volume[i], largest)) s.degenerate = true;
         q.inverted += s.inverted;
         q.degenerate += s.degenerate;
         if (s.inverted || s.degenerate) continue;
@@ -70,6 +91,8 @@ std::vector<Mat<D>> linear_parts(const SimplicialMesh& mesh, const RestFrames<D>
     return A;
 }
 
+template Index count_degenerate<2>(const std::vector<Mat<2>>&, const std::vector<double>&);
+template Index count_degenerate<3>(const std::vector<Mat<3>>&, const std::vector<double>&);
 template MapQuality map_quality<2>(const std::vector<Mat<2>>&, const std::vector<double>&);
 template MapQuality map_quality<3>(const std::vector<Mat<3>>&, const std::vector<double>&);
 template std::vector<Mat<2>> linear_parts<2>(const SimplicialMesh&, const RestFrames<2>&,

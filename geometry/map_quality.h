@@ -30,6 +30,11 @@ struct QualityStat {
     double mean = 0.0;  ///< weighted by rest volume
 };
 
+/// The degenerate simplices of map_quality() (its rule above, non-finite det A_i included),
+/// counted from the determinants alone.
+template <int D>
+Index count_degenerate(const std::vector<Mat<D>>& A, const std::vector<double>& rest_volume);
+
 struct MapQuality {
     Index simplices = 0;
     Index inverted = 0;

@@ -194,6 +194,7 @@ int run_param_command(const ParamArguments& a) {
                                    {"undone_degenerate", d.undone_degenerate}});
             }
             fallback["reason"] = r.fallback.describe_reason();
+            fallback["reason_kind"] = to_string(r.fallback.reason);
             fallback["starts"] = starts;
             fallback["start"] = r.fallback.start ? nlohmann::json(start_name(*r.fallback.start))
                                                  : nlohmann::json(nullptr);

@@ -56,34 +56,29 @@ std::string TriedStart::describe() const {
     }
     switch (outcome) {
         case TriedStartOutcome::kRejected:
-            out << "rejected: the map itself has " << start_quality.inverted << " inverted and "
-                << start_quality.degenerate << " degenerate triangles";
+            out << "rejected: the map itself has " << start_inverted << " inverted and "
+                << start_degenerate << " degenerate triangles";
             break;
         case TriedStartOutcome::kRepairKept:
-            out << "the solver's energy from it left " << verification.degenerate
-                << " degenerate triangles, so the repaired map is kept";
+            out << "the solver's energy from it left " << descent_verification.degenerate
+                << " degenerate triangles, so the repaired map is kept; " << descent;
             break;
         case TriedStartOutcome::kVerified:
-            out << verification.describe();
-            break;
         case TriedStartOutcome::kNotVerified:
-            out << "not verified: " << verification.describe();
+            out << descent;
             break;
     }
     return out.str();
 }
 
 std::string StartFallback::describe_reason() const {
-    std::ostringstream out;
-    out << "the " << requested_start << " start's result ";
-    if (reason == FallbackReason::kOverTheBound) {
-        out << "is over the bound (largest distortion " << requested.max_distortion << " > "
-            << requested.bound << ")";
-    } else {
-        out << "does not verify (" << requested.inverted << " inverted, " << requested.degenerate
-            << " degenerate)";
-    }
-    return out.str();
+    return "the " + requested_start + " start's result " +
+           (reason == FallbackReason::kOverTheBound
+                ? "is over the bound (largest distortion " +
+                      std::to_string(requested.max_distortion) + " > " +
+                      std::to_string(requested.bound) + ")"
+                : "does not verify (" + std::to_string(requested.inverted) + " inverted, " +
+                      std::to_string(requested.degenerate) + " degenerate)");
 }
 
 StartFallback fall_back_to_tutte(const MappingProblem& problem, const StartDisk& disk,
@@ -130,8 +125,9 @@ StartFallback fall_back_to_tutte(const MappingProblem& problem, const StartDisk&
         }
         start.reference = start.initial;
         VertexDescentResult r = run_vertex_descent(start, with_time_left(solver, budget), observer);
-        tried.start_quality = r.solve.initial_quality;
-        tried.verification = r.solve.verification;
+        tried.start_inverted = r.solve.initial_quality.inverted;
+        tried.start_degenerate = r.solve.initial_quality.degenerate;
+        tried.descent_verification = r.solve.verification;
         tried.outcome = !r.start_valid    ? TriedStartOutcome::kRejected
                         : r.solve.success ? TriedStartOutcome::kVerified
                                           : TriedStartOutcome::kNotVerified;
@@ -142,6 +138,7 @@ StartFallback fall_back_to_tutte(const MappingProblem& problem, const StartDisk&
             tried.outcome = TriedStartOutcome::kRepairKept;
             r = std::move(*repaired);
         }
+        tried.descent = r.solve.message;
         tried.valid = r.start_valid;
         tried.verified = r.solve.success;
         tried.max_distortion = r.solve.verification.max_distortion;

@@ -8,8 +8,8 @@
 //    nearly closed surfaces shrink triangles by 1e10 and more: the far end of a tube closed at
 //    one end shrinks exponentially with its depth) is repaired first: Newton on the vertex
 //    positions with the isometric barrier alone, which grows shrunken triangles back (the
-//    conformal barrier is scale-invariant and would leave them); a start it cannot repair is
-//    rejected.
+//    conformal barrier is scale-invariant and would leave them); a start it cannot repair goes
+//    on as it is.
 // An accepted start goes to Newton on the vertex positions (vertex_descent.h) with the solver's
 // options, whose barrier keeps every iterate valid; E_m's reference is that start (E_m =
 // difference measures the change from the initial map, and the initial map is now it).
@@ -53,11 +53,12 @@ struct TriedStart {
     bool repaired = false;
     int repair_rounds = 0;
     Verification repair;
-    bool valid = false;  ///< the start itself had no inverted or degenerate triangle
-    bool verified = false;
+    bool valid = false;                 ///< the start itself had no inverted or degenerate triangle
+    bool verified = false;              ///< its result (kRepairKept: the repaired start) verifies
     double max_distortion = kInfinity;  ///< of its result, in the barrier's measure
-    MapQuality start_quality;           ///< of the start the descent ran from
-    Verification verification;          ///< of its result
+    Index start_inverted = 0, start_degenerate = 0;  ///< of the start the descent ran from
+    Verification descent_verification;  ///< of the descent's result (kRepairKept: the one dropped)
+    std::string descent;                ///< the descent's summary (SimplexAssemblyResult::message)
     /// One sentence for the log and the report.
     std::string describe() const;
 };

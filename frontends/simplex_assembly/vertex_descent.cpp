@@ -91,9 +91,11 @@ VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOp
                                               .undone_degenerate = r.undone_degenerate});
             undone |= r.outcome == VertexStageOutcome::kRanUndone;
         }
-        if (v.ran()) x = v.positions;
+        if (v.ran()) {
+            x = v.positions;
+            result.vertex_stage = v.newton;
+        }
         record_vertex_stage(result.stages, v, v.newton.times.total);
-        result.vertex_stage = v.newton;
         return largest_distortion(x);
     };
 

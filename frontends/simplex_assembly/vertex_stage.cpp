@@ -195,8 +195,7 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
         return r;
     };
     auto degenerate = [&](const Eigen::MatrixXd& x) {
-        return map_quality<D>(linear_parts<D>(mesh, frames, x.leftCols(D)), frames.volume)
-            .degenerate;
+        return count_degenerate<D>(linear_parts<D>(mesh, frames, x.leftCols(D)), frames.volume);
     };
     // One run of Newton from x, undone when it leaves degenerate simplices where x had none.
     auto run = [&](const std::vector<std::shared_ptr<const SimplexTerm<D>>>& at, double s,
@@ -257,7 +256,7 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
     };
     const TimeBudget budget(options.max_time_seconds);
     VertexStage result;
-    // Until a round runs: options.max_iterations >= 1, so only the time limit stops the first.
+    // Until a round runs: only the time limit can stop the first.
     result.outcome = VertexStageOutcome::kSkippedTimeLimit;
     result.positions = start;
     double best = energy_at_s(start);
@@ -285,7 +284,15 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
         ++rounds;
         if (s_first < 0.0) s_first = s;
         s_last = s;
-        const bool undone = v.outcome == VertexStageOutcome::kRanUndone;
+        if (v.outcome == VertexStageOutcome::kRanUndone) {
+            // The round's result is dropped: the best iterate so far stays, at the s it had.
+            if (result.newton.iterations.empty()) result.newton = v.newton;
+            result.outcome = improved ? VertexStageOutcome::kRan : VertexStageOutcome::kRanUndone;
+            result.figures = "round " + std::to_string(rounds - 1) + " undone (" +
+                             std::to_string(v.rounds.back().undone_degenerate) +
+                             " degenerate simplices)";
+            break;
+        }
         if (v.ran()) {
             result.outcome = VertexStageOutcome::kRan;
             result.stop = v.stop;
@@ -316,10 +323,7 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
             result.outcome = v.outcome;
             result.figures = v.figures;
         }
-        if (last_round || !v.ran() || undone) {
-            if (undone && !improved) result.outcome = VertexStageOutcome::kRanUndone;
-            break;
-        }
+        if (last_round || !v.ran()) break;
         const Range after = distortion_range(x);
         const bool stalled = !(after.spread() < (1.0 - kContinuationStall) * d.spread());
         d = after;
@@ -331,12 +335,18 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
             x = result.positions;
         }
     }
-    if (rounds > 0) {
+    if (rounds == 0) {
+        ContinuationRound none;
+        none.outcome = VertexStageOutcome::kSkippedTimeLimit;
+        none.max_distortion_before = none.max_distortion_after = d_start;
+        result.rounds.push_back(none);
+    } else {
         char line[200];
         std::snprintf(line, sizeof line,
-                      "exponent continuation: %d rounds, s %.3g to %.3g, largest distortion "
+                      "exponent continuation: %d round%s, s %.3g to %.3g, largest distortion "
                       "%.4g to %.4g",
-                      rounds, s_first, s_last, d_start, distortion_range(result.positions).largest);
+                      rounds, rounds == 1 ? "" : "s", s_first, s_last, d_start,
+                      distortion_range(result.positions).largest);
         result.continuation_rounds = rounds;
         result.figures = result.figures.empty() ? line : result.figures + "; " + line;
         if (result.outcome == VertexStageOutcome::kRan && !improved)
