@@ -181,14 +181,18 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
         double smallest = kInfinity, largest = 0.0;
         double spread() const { return largest - smallest; }
     };
+    // E_C's distortion of simplex s in the positions x (#V x D or more columns).
+    auto distortion = [&](const Eigen::MatrixXd& x, Index s) {
+        Eigen::Matrix<double, D, D + 1> corners;
+        for (int k = 0; k <= D; ++k)
+            corners.col(k) = x.row(mesh.simplices(s, k)).leftCols(D).transpose();
+        return c.distortion(linear_part<D>(frames, s, corners));
+    };
     auto distortion_range = [&](const Eigen::MatrixXd& x) {
         Range r;
         if (!c.distortion) return r;
         for (Index s : moving) {
-            Eigen::Matrix<double, D, D + 1> corners;
-            for (int k = 0; k <= D; ++k)
-                corners.col(k) = x.row(mesh.simplices(s, k)).leftCols(D).transpose();
-            const double d = c.distortion(linear_part<D>(frames, s, corners));
+            const double d = distortion(x, s);
             r.smallest = std::min(r.smallest, d);
             r.largest = std::max(r.largest, d);
         }
@@ -234,12 +238,7 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
         for (Index s : moving) {
             bool at_fixed = false;
             for (int k = 0; k <= D; ++k) at_fixed |= fixed[mesh.simplices(s, k)] != 0;
-            if (!at_fixed) continue;
-            Eigen::Matrix<double, D, D + 1> corners;
-            for (int k = 0; k <= D; ++k)
-                corners.col(k) = start.row(mesh.simplices(s, k)).leftCols(D).transpose();
-            if (!(c.s * c.distortion(linear_part<D>(frames, s, corners)) <= kBarrierExponentCap))
-                return true;
+            if (at_fixed && !(c.s * distortion(start, s) <= kBarrierExponentCap)) return true;
         }
         return false;
     };
