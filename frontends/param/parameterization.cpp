@@ -132,9 +132,9 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
             result.success = f.solve.verification.within_bound();
         }
         if (keep && options.optimal_bound_rounds > 0 && !budget.exhausted()) {
-            // The optimal bound from the fallback's map: the descent's bound rounds (each bound
-            // just above the largest distortion reached) lowered until they stop improving; the
-            // target 1 + 1e-9 is never reached.
+            // The optimal bound from the fallback's map: the descent's bound rounds
+            // (bound_rounds.h) towards a target at the identity's distortion, lowered until they
+            // stop improving.
             Stopwatch round_watch;
             MappingProblem lowered = problem;
             lowered.initial = result.uv;

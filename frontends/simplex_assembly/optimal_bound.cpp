@@ -1,9 +1,11 @@
 #include "frontends/simplex_assembly/optimal_bound.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "energies/distortion.h"
+#include "frontends/simplex_assembly/bound_rounds.h"
 #include "frontends/simplex_assembly/detail/prepared_problem.h"
 #include "frontends/simplex_assembly/detail/round_verification.h"
 
@@ -27,21 +29,6 @@ std::shared_ptr<const SimplexTermBase> with_bound(const SimplexTermBase& energy,
     return static_cast<const SimplexTerm<3>&>(energy).with_bound(K);
 }
 
-/// Largest distortions within this share of the identity's are the identity's: computed from
-/// positions, a map that is a similarity on every simplex gives 1 + a few ulps, not 1.
-constexpr double kIdentityRoundOff = 1e-9;
-
-/// Whether a round that took a largest distortion from `before` to `after` lowered it: by more
-/// than `tolerance` of its distance before to `identity` (the distortion of a similarity or a
-/// rotation, where every measure bounded here is least: 1 for conformal K) and by more than the
-/// rounds' `margin` of it (gains under the slack each next bound gets are not progress). Relative
-/// to K alone, a round that lowers K - 1 from 3.5e-4 to 2.6e-4 counted as no progress.
-bool lowered(double before, double after, double identity, double tolerance, double margin) {
-    const double distance = before - identity > 0.0 ? before - identity : before;
-    const double gain = before - after;
-    return gain > tolerance * distance && gain > margin * before;
-}
-
 template <int D>
 OptimalBound run_rounds(MappingProblem problem, SimplexAssemblyOptions options,
                         const OptimalBoundOptions& rounds, const SimplexAssemblyObserver& observer);
@@ -59,14 +46,7 @@ OptimalBound optimal_bound(MappingProblem problem, SimplexAssemblyOptions option
         throw InvalidArgumentError("optimal bound: submesh_band = " +
                                    std::to_string(rounds.submesh_band) + ": must be in [0, 1)");
     }
-    if (!(rounds.margin >= 0.0 && rounds.margin < 1.0)) {
-        throw InvalidArgumentError("optimal bound: margin = " + std::to_string(rounds.margin) +
-                                   ": must be in [0, 1)");
-    }
-    if (!(rounds.tolerance >= 0.0 && rounds.tolerance < 1.0)) {
-        throw InvalidArgumentError("optimal bound: tolerance = " +
-                                   std::to_string(rounds.tolerance) + ": must be in [0, 1)");
-    }
+    rounds.rule().validate("optimal bound");
     if (problem.mesh.simplex_dimension() == 3)
         return run_rounds<3>(std::move(problem), std::move(options), rounds, observer);
     return run_rounds<2>(std::move(problem), std::move(options), rounds, observer);
@@ -91,68 +71,62 @@ OptimalBound run_rounds(MappingProblem problem, SimplexAssemblyOptions options,
     bool kept_in_part = false;
     SimplexAssemblyOptions kept_options;
     MappingProblem kept_problem;
-    // The distortion of the identity in each bound's measure (lowered()).
-    double builtin_identity = 0.0;
+    // The bounds lowered (bound_rounds.h), in the order of Verification's: the built-in barrier's
+    // (when builtin_energy is set), then each of the problem's own barriers on a distortion. Each
+    // is lowered towards the distortion of the identity in its measure.
+    std::vector<RoundedBound> rounded;
     if (options.builtin_energy) {
         const Mat<D> I = Mat<D>::Identity();
-        builtin_identity =
+        const double identity =
             distortion<D>(options.distortion, matrix_invariants<D>(I, true), options.gamma);
+        rounded.push_back({.target = identity, .identity = identity});
     }
-    std::vector<double> own_identity;
-    for (const auto& energy : problem.energies) {
-        if (!bounds_a_distortion(*energy)) continue;
-        own_identity.push_back(static_cast<const SimplexTerm<D>&>(*energy).max_distortion(
-            std::vector<Mat<D>>{Mat<D>::Identity()}));
+    std::vector<std::size_t> own;  // the index in problem.energies of each own bound
+    for (std::size_t e = 0; e < problem.energies.size(); ++e) {
+        if (!bounds_a_distortion(*problem.energies[e])) continue;
+        own.push_back(e);
+        const double identity = static_cast<const SimplexTerm<D>&>(*problem.energies[e])
+                                    .max_distortion(std::vector<Mat<D>>{Mat<D>::Identity()});
+        rounded.push_back({.target = identity, .identity = identity});
     }
-    for (int round = 0; round < rounds.rounds; ++round) {
+    const std::size_t first_own = options.builtin_energy ? 1 : 0;
+    auto largest_of = [&](const Verification& v) {
+        std::vector<double> largest;
+        if (options.builtin_energy) largest.push_back(v.max_distortion);
+        for (std::size_t k = 0; k < own.size(); ++k)
+            largest.push_back(k < v.bounds.size() ? v.bounds[k].max_distortion : 0.0);
+        return largest;
+    };
+    // The bounds of the last round (empty before the first: the problem's own).
+    std::vector<double> in_use;
+
+    // One round with `bounds` (empty: the problem's own) from problem.initial.
+    auto solve_round =
+        [&](const std::vector<double>& bounds) -> std::optional<std::vector<double>> {
         Stopwatch round_watch;
-        if (round > 0) {
-            if (budget.exhausted()) break;
-            // The previous verified result starts this round; each of its largest distortions is
-            // the new bound of its barrier.
-            const Verification& previous = result.solve.verification;
+        const bool first = result.rounds.empty();
+        if (!first) {
+            // The previous verified result starts this round, with the new bounds.
             problem.initial = result.solve.positions;
             if (rounds.submesh_band > 0.0) {
                 options.mode = SolveMode::kSubmesh;
                 options.submesh_band = rounds.submesh_band;
             }
-            // A largest distortion at the identity's (the map a similarity, or a rotation, on
-            // every simplex), to round-off, is the least any map has: its bound stays, as no
-            // bound can be below it and one a few ulps above leaves the barrier no room. When
-            // every one is there, the bound is optimal and the rounds end.
-            const auto above_identity = [](double K, double identity) {
-                return K > identity * (1.0 + kIdentityRoundOff);
-            };
-            std::string bounds;
-            bool lowerable = false;
-            if (options.builtin_energy) {
-                const double K = previous.max_distortion * (1.0 + rounds.margin);
-                if (above_identity(K, builtin_identity)) {
-                    options.bound = K;
-                    bounds = "K = " + std::to_string(K);
-                    lowerable = true;
-                }
+            std::string described;
+            if (options.builtin_energy && bounds[0] != in_use[0]) {
+                options.bound = bounds[0];
+                described = "K = " + std::to_string(bounds[0]);
             }
-            std::size_t k = 0;
-            for (auto& energy : problem.energies) {
-                // previous.bounds lists the barriers on a distortion in the problem's order.
-                if (!bounds_a_distortion(*energy) || k >= previous.bounds.size()) continue;
-                const double K = previous.bounds[k].max_distortion * (1.0 + rounds.margin);
-                if (above_identity(K, own_identity[k])) {
-                    energy = with_bound(*energy, K);
-                    bounds +=
-                        (bounds.empty() ? "" : ", ") + energy->name() + " K = " + std::to_string(K);
-                    lowerable = true;
-                }
-                ++k;
+            for (std::size_t k = 0; k < own.size(); ++k) {
+                const double K = bounds[first_own + k];
+                if (K == in_use[first_own + k]) continue;
+                auto& energy = problem.energies[own[k]];
+                energy = with_bound(*energy, K);
+                described +=
+                    (described.empty() ? "" : ", ") + energy->name() + " K = " + std::to_string(K);
             }
-            if (!lowerable) {
-                log_line(observer.logger,
-                         "optimal bound: every largest distortion is the identity's, the least");
-                break;
-            }
-            log_line(observer.logger,
-                     "optimal bound: round " + std::to_string(round) + ", " + bounds);
+            log_line(observer.logger, "optimal bound: round " +
+                                          std::to_string(result.rounds.size()) + ", " + described);
         }
         const SimplexAssemblyOptions round_options = with_time_left(options, budget);
         round_options.validate();
@@ -168,7 +142,7 @@ OptimalBound run_rounds(MappingProblem problem, SimplexAssemblyOptions options,
         times.total = prepare_watch.seconds();
         SimplexAssemblyResult r = solve_prepared<D>(*prepared, round_options, observer, times,
                                                     restarted && D == 2 ? &changes : nullptr);
-        if (round == 0) result.initial_quality = r.initial_quality;
+        if (first) result.initial_quality = r.initial_quality;
         BoundRound record;
         record.bound = options.builtin_energy ? options.bound : kInfinity;
         record.max_distortion = r.verification.max_distortion;
@@ -180,31 +154,29 @@ OptimalBound run_rounds(MappingProblem problem, SimplexAssemblyOptions options,
         result.rounds.push_back(record);
         if (!record.success) {
             if (!result.verified) result.solve = std::move(r);
-            break;  // keep the last verified round
-        }
-        bool improved = !result.verified;
-        if (result.verified) {
-            const Verification& previous = result.solve.verification;
-            if (options.builtin_energy) {
-                improved |= lowered(previous.max_distortion, r.verification.max_distortion,
-                                    builtin_identity, rounds.tolerance, rounds.margin);
-            }
-            for (std::size_t k = 0; k < r.verification.bounds.size(); ++k) {
-                improved |= k < previous.bounds.size() && k < own_identity.size() &&
-                            lowered(previous.bounds[k].max_distortion,
-                                    r.verification.bounds[k].max_distortion, own_identity[k],
-                                    rounds.tolerance, rounds.margin);
-            }
+            return std::nullopt;  // the last verified round is kept
         }
         result.solve = std::move(r);
         result.verified = true;
+        if (!first) in_use = bounds;
         kept_in_part = restarted && D == 2;
         if (kept_in_part) {
             kept_options = round_options;
             kept_problem.initial = problem.initial;
             kept_problem.energies = problem.energies;
         }
-        if (!improved) break;
+        return largest_of(result.solve.verification);
+    };
+
+    if (solve_round({})) {
+        const Verification& first = result.solve.verification;
+        if (options.builtin_energy) in_use.push_back(options.bound);
+        for (std::size_t k = 0; k < own.size(); ++k)
+            in_use.push_back(k < first.bounds.size() ? first.bounds[k].bound : kInfinity);
+        const BoundRoundsEnd end = run_bound_rounds(rounds.rule(), rounded, in_use,
+                                                    largest_of(first), budget, solve_round);
+        log_line(observer.logger, "optimal bound: " + std::to_string(result.rounds.size()) +
+                                      " rounds, ended: " + to_string(end));
     }
     if (kept_in_part) {
         // The whole map, once, from its positions.

@@ -1,8 +1,9 @@
 #pragma once
 // The optimal bound (the paper's 5.1, "Optimal bound"): rounds of the mesh driver, each starting
-// from the previous round's verified result and taking its largest distortion as the new bound,
-// until a round lowers no bound by more than a share `tolerance` of its distance to the
-// distortion of a similarity (K - 1 for conformal K), or does not verify.
+// from the previous round's verified result and taking its largest distortion (times 1 + margin)
+// as the new bound, until a round lowers no bound by more than a share `tolerance` of its
+// distance to the distortion of a similarity (K - 1 for conformal K), or does not verify: the
+// bound loop of bound_rounds.h, each round a solve of the mesh driver.
 //
 // With OptimalBoundOptions::submesh_band > 0 the rounds after the first solve regions around the
 // simplices within that band of the bound (the largest distortions), the rest of the map fixed.
@@ -17,6 +18,7 @@
 #include <functional>
 #include <vector>
 
+#include "frontends/simplex_assembly/bound_rounds.h"
 #include "frontends/simplex_assembly/map_solve.h"
 
 namespace sa {
@@ -55,6 +57,11 @@ struct OptimalBoundOptions {
     /// A front-end's own check of a round's result beyond the driver's verification (PolyCube:
     /// verify_polycube() on its positions); a round it rejects counts as one that did not verify.
     std::function<bool(const SimplexAssemblyResult&)> accept;
+
+    /// The rounds after the first as the bound loop takes them (bound_rounds.h).
+    BoundRule rule() const {
+        return BoundRule{.max_rounds = rounds - 1, .margin = margin, .tolerance = tolerance};
+    }
 };
 
 struct OptimalBound {

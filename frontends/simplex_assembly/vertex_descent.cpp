@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "frontends/simplex_assembly/bound_rounds.h"
 #include "frontends/simplex_assembly/detail/prepared_problem.h"
 #include "frontends/simplex_assembly/detail/vertex_stage.h"
 #include "optim/errors.h"
@@ -13,6 +14,11 @@
 namespace sa {
 
 namespace {
+
+/// Each next bound d + (d - I) / 10: the simplex at the maximum starts well inside the barrier,
+/// which Newton in vertex variables must move first; a round goes on when it lowers d - I by 1%.
+constexpr BoundRule kDescentBoundRule{
+    .max_rounds = kContinuationRounds, .headroom = 0.1, .tolerance = kContinuationStall};
 
 template <int D>
 VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOptions& options,
@@ -100,21 +106,20 @@ VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOp
     };
 
     if (out.start_valid) {
-        // The exponent's continuation, bounded from the start when the start is within K.
-        double d = largest_distortion(x);
-        const double bound = options.bound;
-        const double first_bound = d < bound ? bound : kInfinity;
-        d = run_round(first_bound);
-        // The bound's continuation, for a start that was over it.
-        if (bound < kInfinity && first_bound == kInfinity) {
-            for (int r = 0; r < kContinuationRounds && d >= bound && !undone && !budget.exhausted();
-                 ++r) {
-                const double after = run_round(d + 0.1 * (d - 1.0));
-                const bool stalled = !(after < (1.0 - kContinuationStall) * d);
-                d = after;
-                if (stalled) break;
-            }
-            if (d < bound && !undone && !budget.exhausted()) run_round(bound);
+        // The exponent's continuation, bounded from the start when the start is within K; then
+        // the bound's continuation (bound_rounds.h) for a start that was over it.
+        const double d = largest_distortion(x);
+        const double first_bound = d < options.bound ? options.bound : kInfinity;
+        const double after = run_round(first_bound);
+        if (!undone) {
+            const RoundedBound rounded{.target = options.bound,
+                                       .identity = measure.barrier_distortion(Mat<D>::Identity())};
+            run_bound_rounds(kDescentBoundRule, {rounded}, {first_bound}, {after}, budget,
+                             [&](const std::vector<double>& bounds) {
+                                 const double reached = run_round(bounds[0]);
+                                 if (undone) return std::optional<std::vector<double>>();
+                                 return std::optional(std::vector<double>{reached});
+                             });
         }
     }
     result.times.vertex_stage += stage.lap();

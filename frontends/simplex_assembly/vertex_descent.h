@@ -14,10 +14,12 @@
 //    spread of distortions falls, until s_r = s). Fu et al. 2015 note AMIPS's sensitivity to s on
 //    highly distorted starts (the paper, section 5.1): this is the same exponent, raised gradually.
 //  - the bound: a start over the bound K cannot enter the bounded barrier e^{s d} / (K - d).
-//    The descent first runs unbounded; then, while d_max >= K, rounds with the bound
-//    K_r = d_max + (d_max - 1) / 10 lower d_max (the paper's optimal-bound rounds, section 5.1,
-//    with room above the current maximum so that the start is inside); the last round takes K.
-//    If d_max stops falling first, the result is valid but over the bound, and says so.
+//    The descent first runs unbounded; then, while d_max >= K, the bound loop (bound_rounds.h)
+//    lowers d_max in rounds with the bound K_r = d_max + (d_max - 1) / 10 (room above the current
+//    maximum so that the start is well inside the barrier), each a run of the vertex stage, and
+//    the last round takes K. If d_max stops falling first (a round lowers d_max - 1 by less than
+//    1%), the result is valid but over the bound, and says so. A bound at the identity's
+//    distortion lowers d_max as far as the rounds go: the optimal bound from a valid start.
 // A run whose result has degenerate simplices (the verification's relative rule) while its start
 // had none is undone by the vertex stage and ends the descent: energies whose minimizers are not
 // representable in doubles (conformal maps of long or nearly closed surfaces shrink parts by 1e14
