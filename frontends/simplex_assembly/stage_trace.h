@@ -61,6 +61,18 @@ enum class VertexStageOutcome {
 /// Whether Newton ran in the vertex stage.
 bool newton_ran(VertexStageOutcome outcome);
 
+/// One run of Newton in the vertex stage (vertex_stage.h): the single run, or a round of its
+/// exponent continuation.
+struct ContinuationRound {
+    double s = 1.0;                      ///< E_C's exponent
+    double max_distortion_before = 0.0;  ///< the largest barrier distortion at its start
+    double max_distortion_after = 0.0;   ///< and of what it kept
+    int iterations = 0;                  ///< Newton steps
+    VertexStageOutcome outcome = VertexStageOutcome::kRan;
+    TerminationType termination = TerminationType::kConverged;  ///< when Newton ran
+    Index undone_degenerate = 0;  ///< kRanUndone: the degenerate simplices it left
+};
+
 /// How the last resort ended (untangle_fallback.h).
 enum class FallbackOutcome {
     kReplaced,  ///< fewer bad simplices than the result, which it replaced
@@ -72,14 +84,14 @@ using StageOutcome =
 
 struct StageRecord {
     Stage stage = Stage::kAssembly;
-    StageOutcome outcome;
+    StageOutcome outcome = {};
     int newton_steps = 0;
-    std::optional<TerminationType> termination;  ///< how Newton stopped, when it ran
+    std::optional<TerminationType> termination = {};  ///< how Newton stopped, when it ran
     double seconds = 0.0;
     /// The stage's figures in words, for the report and the summary (the exponent
     /// continuation's rounds, the hand-over, the simplices beyond the exponent cap, ...); empty
     /// when there are none.
-    std::string figures;
+    std::string figures = {};
 };
 
 /// The records of one run, in the order the stages ran (a stage can run more than once: the

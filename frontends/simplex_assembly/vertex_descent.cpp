@@ -87,14 +87,7 @@ VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOp
             prepared.mesh, prepared.frames, energies_at(options.s), x, fixed, o, observer.logger,
             VertexStageTerms<D>{prepared.assembly.fans, {}, {}, {}, continuation});
         for (const ContinuationRound& r : v.rounds) {
-            out.rounds.push_back(DescentRound{.bound = bound,
-                                              .s = r.s,
-                                              .max_distortion_before = r.max_distortion_before,
-                                              .max_distortion_after = r.max_distortion_after,
-                                              .iterations = r.iterations,
-                                              .outcome = r.outcome,
-                                              .termination = r.termination,
-                                              .undone_degenerate = r.undone_degenerate});
+            out.rounds.push_back(DescentRound{r, bound});
             undone |= r.outcome == VertexStageOutcome::kRanUndone;
         }
         if (v.ran()) {

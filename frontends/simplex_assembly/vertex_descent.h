@@ -34,16 +34,8 @@ namespace sa {
 
 /// One round of the descent: a round of the vertex stage's exponent continuation (or its single
 /// run) at one bound.
-struct DescentRound {
-    double bound = kInfinity;          ///< the bound used
-    double s = 1.0;                    ///< the exponent used
-    double max_distortion_before = 0;  ///< d_max at the round's start (the barrier's measure)
-    double max_distortion_after = 0;
-    int iterations = 0;
-    VertexStageOutcome outcome = VertexStageOutcome::kRan;
-    TerminationType termination = TerminationType::kConverged;  ///< when Newton ran
-    /// Its result had degenerate simplices, its start none: the round was undone (above).
-    Index undone_degenerate = 0;
+struct DescentRound : ContinuationRound {
+    double bound = kInfinity;  ///< the bound used
 };
 
 struct VertexDescentResult {

@@ -60,17 +60,6 @@ inline constexpr int kContinuationRounds = 30;
 /// distortion) by less than this share ends it: the next round would hardly differ.
 inline constexpr double kContinuationStall = 0.01;
 
-/// One run of Newton in the stage: the single run, or a round of the continuation.
-struct ContinuationRound {
-    double s = 1.0;                      ///< E_C's exponent
-    double max_distortion_before = 0.0;  ///< the largest barrier distortion at its start
-    double max_distortion_after = 0.0;   ///< and of what it kept
-    int iterations = 0;                  ///< Newton steps
-    VertexStageOutcome outcome = VertexStageOutcome::kRan;
-    TerminationType termination = TerminationType::kConverged;  ///< when Newton ran
-    Index undone_degenerate = 0;  ///< kRanUndone: the degenerate simplices it left
-};
-
 struct VertexStage {
     VertexStageOutcome outcome = VertexStageOutcome::kSkippedInfeasibleStart;
     bool ran() const { return newton_ran(outcome); }
