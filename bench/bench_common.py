@@ -50,13 +50,39 @@ def fmt(x, digits=3):
     return str(x)
 
 
+def machine():
+    """The host, its processor and its cores, in words."""
+    model = platform.processor() or platform.machine()
+    try:
+        with open('/proc/cpuinfo') as f:
+            model = next(line.split(':', 1)[1].strip() for line in f if line.startswith('model name'))
+    except (OSError, StopIteration):
+        pass
+    return '%s (%s, %d cores)' % (platform.node(), model, os.cpu_count())
+
+
+def commit():
+    """The commit of the checkout the benchmark runs in ('+ changes' when its code has uncommitted
+    changes)."""
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    try:
+        head = subprocess.run(['git', '-C', root, 'rev-parse', '--short', 'HEAD'], capture_output=True,
+                              text=True, check=True).stdout.strip()
+        # Documents do not count: the tables are written into them.
+        dirty = subprocess.run(['git', '-C', root, 'status', '--porcelain', '--untracked-files=no',
+                                '--', '.', ':!*.md'], capture_output=True, text=True,
+                               check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return 'unknown'
+    return head + (' + changes' if dirty else '')
+
+
 def write_section(path, marker, command, output):
     """Replaces the text between <!-- marker:begin --> and <!-- marker:end --> of `path` (or
-    appends it) with `output`, headed by the date, the machine and `command`."""
+    appends it) with `output`, headed by the date, the machine, the commit and `command`."""
     begin, end = '<!-- %s:begin -->' % marker, '<!-- %s:end -->' % marker
-    section = ('%s\nMeasured %s on %s (%d cores), with\n\n```\n%s\n```\n\n%s%s' %
-               (begin, datetime.date.today().isoformat(), platform.node(), os.cpu_count(), command,
-                output, end))
+    section = ('%s\nMeasured %s on %s at commit %s, with\n\n```\n%s\n```\n\n%s%s' %
+               (begin, datetime.date.today().isoformat(), machine(), commit(), command, output, end))
     text = open(path).read() if os.path.exists(path) else ''
     if begin in text and end in text:
         text = text[:text.index(begin)] + section + text[text.index(end) + len(end):]
