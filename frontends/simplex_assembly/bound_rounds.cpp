@@ -88,7 +88,8 @@ BoundRoundsEnd run_bound_rounds(const BoundRule& rule, const std::vector<Rounded
         for (std::size_t k = 0; k < rounded.size(); ++k) {
             const RoundedBound& b = rounded[k];
             const bool at_target = next[k] == b.target || at_identity((*after)[k], b.identity);
-            progress |= rule.lowered(largest[k], (*after)[k], b.identity);
+            if (!at_identity(largest[k], b.identity))
+                progress |= rule.lowered(largest[k], (*after)[k], b.identity);
             target_due |= !at_target && (*after)[k] < b.target;
             settled &= at_target;
         }

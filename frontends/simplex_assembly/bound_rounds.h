@@ -13,12 +13,10 @@
 //   T_k   its target: the bound the caller asked for (the descent), or I_k itself (the optimal
 //         bound: as low as the rounds go).
 // Before a round every bound gets
-//   K_k kept                       when d_k <= I_k (1 + 1e-9) (a map at the identity's distortion,
-//   to
-//                                  round-off: no bound is below it, and one a few ulps above
-//                                  leaves the barrier no room),
-//   K_k = T_k                      when d_k < T_k (reached: a round at the target),
-//   K_k = d_k + margin d_k + headroom (d_k - I_k)   otherwise,
+//   K_k kept        when d_k <= I_k (1 + 1e-9): a map at the identity's distortion, to round-off
+//                   (no bound is below it, and one a few ulps above leaves the barrier no room);
+//   K_k = T_k       when d_k < T_k (reached: a round at the target);
+//   K_k = d_k + margin d_k + headroom (d_k - I_k)   otherwise;
 // and the rounds end when no bound changes, when a round lowers no d_k by more than
 // tolerance (d_k - I_k) and margin d_k, when a round does not verify (the caller keeps the last
 // one that did), after max_rounds rounds, or when the time budget runs out.

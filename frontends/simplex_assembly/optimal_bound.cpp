@@ -175,8 +175,11 @@ OptimalBound run_rounds(MappingProblem problem, SimplexAssemblyOptions options,
             in_use.push_back(k < first.bounds.size() ? first.bounds[k].bound : kInfinity);
         const BoundRoundsEnd end = run_bound_rounds(rounds.rule(), rounded, in_use,
                                                     largest_of(first), budget, solve_round);
-        log_line(observer.logger, "optimal bound: " + std::to_string(result.rounds.size()) +
-                                      " rounds, ended: " + to_string(end));
+        if (rounds.rounds > 1) {
+            log_line(observer.logger, "optimal bound: " + std::to_string(result.rounds.size()) +
+                                          " round" + (result.rounds.size() == 1 ? "" : "s") +
+                                          ", ended: " + to_string(end));
+        }
     }
     if (kept_in_part) {
         // The whole map, once, from its positions.

@@ -17,8 +17,9 @@ namespace {
 
 /// Each next bound d + (d - I) / 10: the simplex at the maximum starts well inside the barrier,
 /// which Newton in vertex variables must move first; a round goes on when it lowers d - I by 1%.
+/// The continuation's rounds, then the round at the bound.
 constexpr BoundRule kDescentBoundRule{
-    .max_rounds = kContinuationRounds, .headroom = 0.1, .tolerance = kContinuationStall};
+    .max_rounds = kContinuationRounds + 1, .headroom = 0.1, .tolerance = kContinuationStall};
 
 template <int D>
 VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOptions& options,

@@ -145,5 +145,37 @@ TEST(VertexStageContinuation, LowersASimplexBeyondTheCapWhenNothingIsFixed) {
     EXPECT_EQ(q.inverted + q.degenerate, 0);
 }
 
+// The bound's continuation in vertex variables (vertex_descent.h, bound_rounds.h): a valid start
+// over its bound cannot enter the bounded barrier. The unit square stretched along x by
+// x -> x + 1.5 x^2 (conformal distortion from 1 at x = 0 to 2.125 at x = 1), E_m holding it to
+// that start strongly enough that an unbounded run keeps it over the conformal bound 1.6: then
+// rounds at bounds just above the largest distortion, each lower, and a round at 1.6 itself.
+TEST(VertexDescent, LowersAStretchedStartUnderItsBoundInRounds) {
+    MappingProblem problem;
+    problem.mesh = grid_triangles(12, 12);
+    problem.initial = problem.mesh.vertices;
+    for (Index v = 0; v < problem.initial.rows(); ++v) {
+        const double x = problem.mesh.vertices(v, 0);
+        problem.initial(v, 0) = x + 1.5 * x * x;
+    }
+    problem.reference = problem.initial;
+    SimplexAssemblyOptions options;
+    options.mapping_distortion = DistortionType::kDifference;
+    options.mu = 1e5;
+    options.bound = 1.6;
+    const VertexDescentResult r = run_vertex_descent(problem, options);
+    ASSERT_TRUE(r.start_valid);
+    EXPECT_TRUE(r.solve.success) << r.solve.message;
+    EXPECT_LE(r.solve.verification.max_distortion, 1.6) << r.solve.message;
+    ASSERT_GE(r.rounds.size(), 3u) << r.solve.message;
+    EXPECT_GT(r.rounds.front().max_distortion_before, 2.0);
+    EXPECT_EQ(r.rounds.front().bound, kInfinity);
+    EXPECT_GT(r.rounds[1].bound, 1.6);
+    EXPECT_LT(r.rounds[1].bound, kInfinity);
+    EXPECT_EQ(r.rounds.back().bound, 1.6);
+    for (std::size_t k = 1; k + 1 < r.rounds.size(); ++k)
+        EXPECT_LE(r.rounds[k].bound, r.rounds[k - 1].bound) << "round " << k;
+}
+
 }  // namespace
 }  // namespace sa

@@ -56,8 +56,9 @@ namespace sa {
 inline constexpr double kExponentRange = 20.0;
 /// Rounds of a continuation at most.
 inline constexpr int kContinuationRounds = 30;
-/// A round that lowers what a continuation follows (the spread of distortions, the largest
-/// distortion) by less than this share ends it: the next round would hardly differ.
+/// A round that lowers what a continuation follows (the spread of distortions; in the descent's
+/// bound rounds, the largest distortion's distance to the identity's) by less than this share
+/// ends it: the next round would hardly differ.
 inline constexpr double kContinuationStall = 0.01;
 
 struct VertexStage {
