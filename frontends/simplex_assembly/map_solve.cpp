@@ -343,13 +343,7 @@ SimplexAssemblyResult solve_prepared(PreparedProblem<D>& p, const SimplexAssembl
         verify_result<D>(input, options, result, &prepared->topology);
         if (changes != nullptr) *changes = VerifiedMap{};  // measured whole next time
     }
-    if (!prepared->assembly.fans.empty()) {
-        result.boundary_violations_before =
-            count_boundary_violations(prepared->assembly.fans, prepared->initial_map);
-        result.boundary_violations_after =
-            count_boundary_violations(prepared->assembly.fans, result.positions);
-        if (result.boundary_violations_after > 0) result.success = false;
-    }
+    verify_boundary_angles<D>(*prepared, result);
     // A valid map over a bound the caller asked for is not what was asked (the last resort above
     // untangles without the bounds): written, and reported as a failure.
     if (!result.verification.within_bound()) result.success = false;

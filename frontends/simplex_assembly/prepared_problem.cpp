@@ -7,6 +7,7 @@
 #include "energies/boundary_angle_energy.h"
 #include "energies/distortion.h"
 #include "energies/simplex_energy.h"
+#include "geometry/boundary_fans.h"
 #include "geometry/disassembly.h"
 #include "geometry/handle_feasibility.h"
 #include "geometry/local_injectivity.h"
@@ -506,6 +507,16 @@ template void verify_handles<2>(const MappingProblem&, const SimplexAssemblyOpti
                                 const Eigen::MatrixXd&, Verification&);
 template void verify_handles<3>(const MappingProblem&, const SimplexAssemblyOptions&,
                                 const Eigen::MatrixXd&, Verification&);
+template <int D>
+void verify_boundary_angles(const PreparedProblem<D>& p, SimplexAssemblyResult& result) {
+    if (p.assembly.fans.empty()) return;
+    result.boundary_violations_before = count_boundary_violations(p.assembly.fans, p.initial_map);
+    result.boundary_violations_after = count_boundary_violations(p.assembly.fans, result.positions);
+    if (result.boundary_violations_after > 0) result.success = false;
+}
+
+template void verify_boundary_angles<2>(const PreparedProblem<2>&, SimplexAssemblyResult&);
+template void verify_boundary_angles<3>(const PreparedProblem<3>&, SimplexAssemblyResult&);
 template void verify_result<2>(const MappingProblem&, const SimplexAssemblyOptions&,
                                SimplexAssemblyResult&, const MeshTopology*);
 template void verify_result<3>(const MappingProblem&, const SimplexAssemblyOptions&,

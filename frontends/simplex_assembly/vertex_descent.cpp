@@ -120,13 +120,7 @@ VertexDescentResult descend(const MappingProblem& input, const SimplexAssemblyOp
     result.newton.num_threads = result.vertex_stage.num_threads;  // no assembly ran
     result.positions = prepared.to_original(x);
     verify_result<D>(input, options, result, &prepared.topology);
-    if (!prepared.assembly.fans.empty()) {
-        result.boundary_violations_before =
-            count_boundary_violations(prepared.assembly.fans, prepared.initial_map);
-        result.boundary_violations_after =
-            count_boundary_violations(prepared.assembly.fans, result.positions);
-        if (result.boundary_violations_after > 0) result.success = false;
-    }
+    verify_boundary_angles<D>(prepared, result);
     if (!out.start_valid) result.success = false;
     std::ostringstream message;
     message << (!result.success                      ? "FAILED: "

@@ -106,4 +106,10 @@ template <int D>
 void verify_result(const MappingProblem& input, const SimplexAssemblyOptions& options,
                    SimplexAssemblyResult& result, const MeshTopology* topology = nullptr);
 
+/// E_theta's part of a verification, for a problem with boundary fans (a free-boundary map kept
+/// injective on its boundary, 5.1): the boundary vertices whose angle sum is 2 pi or more in the
+/// initial map and in result.positions; a result with any has not succeeded. Nothing without fans.
+template <int D>
+void verify_boundary_angles(const PreparedProblem<D>& p, SimplexAssemblyResult& result);
+
 }  // namespace sa
