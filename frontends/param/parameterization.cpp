@@ -4,6 +4,7 @@
 
 #include <sstream>
 
+#include "frontends/simplex_assembly/map_rank.h"
 #include "geometry/boundary_fans.h"
 #include "geometry/boundary_loops.h"
 #include "geometry/initial_maps.h"
@@ -123,8 +124,8 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
             fallback_problem, disk, with_time_left(options.solver, budget), observer,
             initial_uv != nullptr ? std::string("given") : to_string(initial), v);
         const StartFallback& f = result.fallback;
-        const bool keep =
-            f.verified() && (!v.passed() || f.solve.verification.max_distortion < v.max_distortion);
+        const bool keep = MapRank::of_verdict(f.verified(), f.solve.verification.max_distortion)
+                              .better_than(MapRank::of_verdict(v.passed(), v.max_distortion));
         if (keep) {
             result.uv = f.solve.positions;
             result.solve = f.solve;
@@ -149,7 +150,8 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
             for (const DescentRound& r : d.rounds) record.iterations += r.iterations;
             record.time = round_watch.seconds();
             result.rounds.push_back(record);
-            if (d.solve.success && record.max_distortion < result.reached_bound) {
+            if (MapRank::of_verdict(d.solve.success, record.max_distortion)
+                    .better_than(MapRank::of_verdict(true, result.reached_bound))) {
                 result.uv = d.solve.positions;
                 result.solve = d.solve;
                 result.solve.verification.bound = options.solver.bound;

@@ -3,6 +3,7 @@
 #include <optional>
 #include <sstream>
 
+#include "frontends/simplex_assembly/map_rank.h"
 #include "geometry/initial_maps.h"
 #include "geometry/map_quality.h"
 #include "optim/enum_names.h"
@@ -144,8 +145,9 @@ StartFallback fall_back_to_tutte(const MappingProblem& problem, const StartDisk&
         tried.max_distortion = r.solve.verification.max_distortion;
         log_line(observer.logger, "fallback: " + start_name(weights) + ": " + tried.describe());
         const bool better =
-            tried.verified && (!fallback.verified() ||
-                               tried.max_distortion < fallback.solve.verification.max_distortion);
+            MapRank::of_verdict(tried.verified, tried.max_distortion)
+                .better_than(MapRank::of_verdict(fallback.verified(),
+                                                 fallback.solve.verification.max_distortion));
         fallback.starts.push_back(tried);
         if (better) {
             fallback.start = weights;

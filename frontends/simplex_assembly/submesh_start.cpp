@@ -7,6 +7,7 @@
 #include "energies/barrier.h"
 #include "frontends/simplex_assembly/detail/forced_distortion.h"
 #include "frontends/simplex_assembly/detail/untangle_fallback.h"
+#include "frontends/simplex_assembly/map_rank.h"
 #include "geometry/arap_local_step.h"
 #include "geometry/branch_points.h"
 #include "geometry/disassembly.h"
@@ -109,13 +110,14 @@ SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& 
     std::vector<Mat<D>> A = linear_parts<D>(p.mesh, p.frames, x);
     start.positions = p.to_original(x);
     start.bad = bad_simplices<D>(p, A);
-    // Fewer bad simplices win; with as few, the later iterate (lower Q) wins, except when only
-    // a valid map is asked for.
+    // Fewer bad simplices win (map_rank.h); with as many, the later iterate (lower Q) wins,
+    // except when only a valid map is asked for.
     auto keep_if_better = [&](const Eigen::MatrixXd& candidate, const std::vector<Mat<D>>& parts,
                               const StartChoice& choice) {
         std::vector<Index> bad = bad_simplices<D>(p, parts);
-        const bool fewer = bad.size() < start.bad.size();
-        if (!fewer && (bad.size() > start.bad.size() || options.until_valid)) return false;
+        const MapRank rank{Index(bad.size())}, current{Index(start.bad.size())};
+        const bool fewer = rank.better_than(current);
+        if (!fewer && (rank.failing != current.failing || options.until_valid)) return false;
         start.positions = p.to_original(candidate);
         start.bad.swap(bad);
         start.choice = choice;

@@ -2,6 +2,7 @@
 
 #include "frontends/simplex_assembly/detail/forced_distortion.h"
 #include "frontends/simplex_assembly/detail/vertex_stage.h"
+#include "frontends/simplex_assembly/map_rank.h"
 #include "geometry/map_quality.h"
 #include "optim/stopwatch.h"
 
@@ -61,7 +62,8 @@ bool untangle_fallback(PreparedProblem<D>& p, const SimplexAssemblyOptions& opti
         initial.row(input.handles[k]) = p.assembly.targets[k].transpose();
     const Eigen::MatrixXd reached = (result.positions.rowwise() - p.map_center) * p.scale;
     const Index before = invalid_simplices<D>(p, reached);
-    const bool from_result = before <= invalid_simplices<D>(p, initial);
+    const bool from_result =
+        !MapRank{invalid_simplices<D>(p, initial)}.better_than(MapRank{before});
     log_line(observer.logger,
              std::string("no valid map: untangling in vertex variables from the ") +
                  (from_result ? "result" : "initial map"));
@@ -69,9 +71,10 @@ bool untangle_fallback(PreparedProblem<D>& p, const SimplexAssemblyOptions& opti
         untangle_prepared<D>(p, options, budget, from_result ? reached : initial, observer.logger);
     Eigen::MatrixXd positions = u.positions;
     const Index after = invalid_simplices<D>(p, positions);
+    const bool replaced = MapRank{after}.better_than(MapRank{before});
     StageRecord record{
         .stage = Stage::kFallback,
-        .outcome = after < before ? FallbackOutcome::kReplaced : FallbackOutcome::kNoBetter,
+        .outcome = replaced ? FallbackOutcome::kReplaced : FallbackOutcome::kNoBetter,
         .newton_steps = u.iterations};
     if (u.iterations > 0) record.termination = u.newton.termination;
     record.figures = "from the " + std::string(from_result ? "result" : "initial map") + ", " +
@@ -80,7 +83,7 @@ bool untangle_fallback(PreparedProblem<D>& p, const SimplexAssemblyOptions& opti
                      " bad simplices against " + std::to_string(before);
     record.seconds = watch.lap();
     result.stages.records.push_back(record);
-    if (after >= before) return false;
+    if (!replaced) return false;
     result.times.optimization += record.seconds;
     if (u.untangled && options.vertex_stage && !options.until_valid && budget.exhausted()) {
         result.stages.add(Stage::kVertexStage, VertexStageOutcome::kSkippedTimeLimit);
