@@ -79,10 +79,12 @@ def commit():
 
 def write_section(path, marker, command, output):
     """Replaces the text between <!-- marker:begin --> and <!-- marker:end --> of `path` (or
-    appends it) with `output`, headed by the date, the machine, the commit and `command`."""
+    appends it) with `output`, headed by the date, the machine and `command`. The commit measured
+    goes to stderr, not into the document (documents describe the project as it is)."""
     begin, end = '<!-- %s:begin -->' % marker, '<!-- %s:end -->' % marker
-    section = ('%s\nMeasured %s on %s at commit %s, with\n\n```\n%s\n```\n\n%s%s' %
-               (begin, datetime.date.today().isoformat(), machine(), commit(), command, output, end))
+    print('%s: measured at commit %s' % (marker, commit()), file=sys.stderr)
+    section = ('%s\nMeasured %s on %s, with\n\n```\n%s\n```\n\n%s%s' %
+               (begin, datetime.date.today().isoformat(), machine(), command, output, end))
     text = open(path).read() if os.path.exists(path) else ''
     if begin in text and end in text:
         text = text[:text.index(begin)] + section + text[text.index(end) + len(end):]
