@@ -1,5 +1,5 @@
 """Helpers shared by the benchmark harnesses: measured child runs, number formatting, and
-replacing a marked section of BENCHMARKS.md."""
+replacing a marked section of a document (docs/performance.md)."""
 import datetime
 import json
 import os

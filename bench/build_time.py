@@ -166,7 +166,7 @@ def main():
                              'with a dash)')
     parser.add_argument('--keep', help='build in this folder (new or empty) and keep it')
     parser.add_argument('--log', help='also copy the per-unit log to this file')
-    parser.add_argument('--write', help='put the table into this file (BENCHMARKS.md)')
+    parser.add_argument('--write', help='put the table into this file (docs/performance.md)')
     args = parser.parse_args()
 
     if args.keep and os.path.exists(args.keep) and os.listdir(args.keep):

@@ -13,7 +13,7 @@ Cases (as deform_start_benchmarks.py's):
   bar-<pose>      the Figure 16 bar (bench_bar_pose)
 
   python3 bench/deform_benchmarks.py [--only NAME] [--optimal-bound] [--timeout S]
-                                     [--write BENCHMARKS.md] [-- extra sa deform arguments]
+                                     [--write docs/performance.md] [-- extra sa deform arguments]
 """
 import argparse
 import json

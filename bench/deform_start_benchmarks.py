@@ -14,7 +14,7 @@ Cases:
                   of bench/knight_pose.py (libigl's ARAP tutorial at anim_t = 1), as `index x y z`
   bar-<pose>      the generated bar of Figure 16 (tests/fixtures/bar_deformation.h)
 
-  python3 bench/deform_start_benchmarks.py [--runs 3] [--only NAME] [--write BENCHMARKS.md]
+  python3 bench/deform_start_benchmarks.py [--runs 3] [--only NAME] [--write docs/performance.md]
 """
 import argparse
 import json

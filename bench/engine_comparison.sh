@@ -1,5 +1,5 @@
 #!/bin/bash
-# Runs the cases of BENCHMARKS.md's "The engine (issue 20)" with one `sa` build and writes its
+# Runs the cases of docs/measurements.md's "The engine" with one `sa` build and writes its
 # JSON reports to OUT/<case>.json; bench/compare_reports.py compares two such folders.
 # usage: bench/engine_comparison.sh path/to/sa OUT [DATA]
 set -u

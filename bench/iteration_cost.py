@@ -8,8 +8,8 @@ prints, per run, from the report's per-iteration records of the assembly stage:
                               time per iteration) / that iteration's factorization time. The
                               first iteration is shown apart: it pays the first touch of the
                               factor's memory, which flatters it.
-  phase totals                the sum of the phase times over the factorization's, as earlier
-                              records of BENCHMARKS.md computed it (first iteration included)
+  phase totals                the sum of the phase times over the factorization's, as older
+                              measurements computed it (first iteration included)
   ms per iteration            each phase's total over the iterations
 
   python3 bench/iteration_cost.py [--only stgc-3d,stretch] [--repeat 3]

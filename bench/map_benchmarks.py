@@ -18,7 +18,7 @@ Cases:
                     position, the interior tangled) and large deformations by handle slabs
 
   python3 bench/map_benchmarks.py [--cases tlc,deform,generated] [--timeout 600]
-                                  [--write BENCHMARKS.md]
+                                  [--write docs/performance.md]
 
 With --write, the table replaces the section between the markers
 <!-- map-benchmarks:begin --> and <!-- map-benchmarks:end --> of that file, with the command

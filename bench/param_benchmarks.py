@@ -15,7 +15,7 @@ surfaces with a one-vertex hole and sliver triangles), from LSCM and from Tutte,
 the fallback to a Tutte start (frontends/param/start_fallback.h); --write puts that table between
 <!-- param-robustness:begin --> and <!-- param-robustness:end -->.
 
-  python3 bench/param_benchmarks.py [--large] [--large-only] [--robustness] [--compare-full] [--only NAME] [--timeout 600] [--write BENCHMARKS.md]
+  python3 bench/param_benchmarks.py [--large] [--large-only] [--robustness] [--compare-full] [--only NAME] [--timeout 600] [--write docs/performance.md]
 
 With --compare-full, every shared mesh also runs with the optimal bound's previous default, its
 rounds in the full mode (FULL_ROUNDS).

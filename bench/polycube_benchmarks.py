@@ -5,7 +5,7 @@ cleaned), charts, squashed elements and splits, and the cube-cover start, which 
 checker ../shared/tools/check_map.py also measures (OUT.rest.mesh against OUT.mesh). Prints a
 markdown table; times are wall seconds of each stage, peak memory of the whole run.
 
-  python3 bench/polycube_benchmarks.py [--only NAME] [--timeout 600] [--write BENCHMARKS.md]
+  python3 bench/polycube_benchmarks.py [--only NAME] [--timeout 600] [--write docs/performance.md]
 
 With --write, the table replaces the section between <!-- polycube-pieces:begin --> and
 <!-- polycube-pieces:end --> of that file.

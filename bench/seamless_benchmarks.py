@@ -8,7 +8,7 @@ foldovers of the plain Poisson map of the input field and of ours, seam mismatch
 It also measures libigl's published MIQ result for 3holes (frame-fields/3holes-miq-UV.dmat and
 -FUV.dmat, on surfaces/3holes.off) with the same checks, beside ours on the same mesh.
 
-  python3 bench/seamless_benchmarks.py [--only NAME] [--timeout 600] [--write BENCHMARKS.md]
+  python3 bench/seamless_benchmarks.py [--only NAME] [--timeout 600] [--write docs/performance.md]
 
 Seam mismatch (measured here, independently of sa): for every interior edge of the surface, the
 two images of the edge in (u, v) seen from its two faces, d_f and d_g; the mismatch is

@@ -1,5 +1,5 @@
 # How the project's own targets are compiled quickly, included by the top-level CMakeLists.txt
-# (BENCHMARKS.md, "Build time", measures each choice):
+# (docs/measurements.md, "Build time", measures each choice):
 #
 # - sa_precompile_headers(target [TBB] [GTEST]): the standard, Eigen and (when asked) TBB and
 #   GoogleTest headers that nearly every unit of `target` includes are parsed once per

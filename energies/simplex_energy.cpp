@@ -105,7 +105,7 @@ double SimplexEnergy<D>::value_gradient_hessian(Index i, const Vec<arity>& a, Ve
         // Differentiated in the four invariants (Dual<4>), then chained to vec(A) once:
         // H = sum_k e_k H_k + G E G^T with G = [grad I1, grad I2, grad J, grad S]. Differentiating
         // every operation in vec(A) (Dual<9>) updated a 9 x 9 Hessian per operation, about twice
-        // the evaluation time (BENCHMARKS.md, "Figures moved out of the code").
+        // the evaluation time (docs/measurements.md, "Figures moved out of the code").
         auto seeded = [](double x, int k) {
             Dual<4> v(x);
             v.gradient[k] = 1.0;

@@ -3,7 +3,7 @@
 // (geometry/io/openmesh_plugin.cpp and geometry/subdivision_plugin.cpp, linked with OpenMesh);
 // geometry/io/openmesh_io.cpp and geometry/subdivision.cpp forward to it, loading the plugin on
 // first use (geometry/io/plugin_library.h): linked into every program, libOpenMeshCore.so's
-// relocations and static initializers cost each start (BENCHMARKS.md).
+// relocations and static initializers cost each start (docs/measurements.md).
 
 #include "geometry/io/openmesh_io.h"
 #include "geometry/subdivision.h"

@@ -26,7 +26,7 @@
 //   static constexpr bool is_convex = true;
 //       The Hessian is positive semidefinite wherever the energy is finite (a sum of squares of
 //       linear functions, say): it is never projected (projecting the 18 x 18 blocks of 3D edge
-//       assembly was a large part of a small solve's setup: BENCHMARKS.md).
+//       assembly was a large part of a small solve's setup: docs/measurements.md).
 //   double value_gradient(Index element, const Vec<N>& x, Vec<N>& gradient) const;
 //   bool project_hessian(Index element, const Vec<N>& x, Mat<N>& hessian, ProjectionMode mode,
 //                        double epsilon) const;

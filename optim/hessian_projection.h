@@ -43,7 +43,7 @@ bool is_diagonally_dominant_above(const Matrix& h, double epsilon) {
 /// smaller), one for any size up to kLargestStackProjection on storage of that capacity (the 3D
 /// blocks of 9 and 12 variables, as fast there as fixed-size ones and without a heap
 /// allocation), and one for larger blocks. A fixed-size solver per size, instantiated in every
-/// unit that projects such blocks, is slow to compile (BENCHMARKS.md, "Build time").
+/// unit that projects such blocks, is slow to compile (docs/measurements.md, "Build time").
 inline constexpr int kLargestFixedSizeProjection = 4;
 inline constexpr int kLargestStackProjection = 16;
 

@@ -47,7 +47,7 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 
 /// Fill-reducing ordering for Eigen's simplicial factorizations by SuiteSparse's AMD (the one
 /// CHOLMOD uses) instead of Eigen's own: the same fill, and an analysis about ten times faster
-/// (BENCHMARKS.md, "Figures moved out of the code"), which matters when every submesh is analyzed
+/// (docs/measurements.md, "Figures moved out of the code"), which matters when every submesh is analyzed
 /// once and factored a few times. Eigen hands it the full symmetric pattern.
 struct SuiteSparseAmdOrdering {
     template <class Matrix, class Permutation>
@@ -99,7 +99,7 @@ void quiet(cholmod_common& common) {
 /// 16, 64 or 128 columns (CHOLMOD's defaults: 4, 16, 48; the allowed share of zeros, zrelax, kept
 /// at its defaults): fewer and larger BLAS calls, faster per factorization on 3D submeshes, full
 /// 3D systems, vertex stages and large grid Laplacians; larger settings and more zeros were
-/// slower on all of them (BENCHMARKS.md, "Figures moved out of the code").
+/// slower on all of them (docs/measurements.md, "Figures moved out of the code").
 void relax_supernodes(cholmod_common& common) {
     common.nrelax[0] = 16;
     common.nrelax[1] = 64;
@@ -119,7 +119,7 @@ struct PrepermutedMatrix {
     std::vector<int> pivot;   ///< pivot[k] = the row of A that is row k of P A P^T
     /// For one right-hand side; kept only when it splits the tree (CHOLMOD's single-thread
     /// substitutions are otherwise as fast or faster, as on deform/stretch's factor of 4,222 small
-    /// supernodes). Per Newton iteration, the split against CHOLMOD's: BENCHMARKS.md,
+    /// supernodes). Per Newton iteration, the split against CHOLMOD's: docs/measurements.md,
     /// "Triangular solves alone" and "Figures moved out of the code".
     std::optional<SupernodalSolve> substitution;
 
@@ -239,7 +239,7 @@ struct LinearSolver::Impl {
                 // A single factorization (kAmd) keeps CHOLMOD's default merging: as fast once,
                 // and a smaller factor (about 40% fewer stored entries on a planar LSCM system
                 // of a million unknowns), which matters where fresh memory is slow to touch
-                // (BENCHMARKS.md, "Planar parameterization at scale").
+                // (docs/measurements.md, "Planar parameterization at scale").
                 if (ordering != FillOrdering::kAmd) relax_supernodes(supernodal->cholmod());
                 set_ordering(supernodal->cholmod(), ordering);
                 break;

@@ -10,7 +10,7 @@
 //   kAuto                kEigenLDLT when CHOLMOD's analysis counts fewer than kAutoSupernodalFlops
 //                        for the factorization (the supernodes are then too small for BLAS-3 to
 //                        pay), kCholmodSupernodal otherwise: the crossing point of the two on
-//                        systems from 7.9e5 to 3.6e8 flops (BENCHMARKS.md, "Figures moved out of
+//                        systems from 7.9e5 to 3.6e8 flops (docs/measurements.md, "Figures moved out of
 //                        the code").
 // The symbolic analysis (fill-reducing ordering) is done by analyze() and reused by every
 // factorize() until analyze() is called again. CHOLMOD's ordering is chosen by FillOrdering:
@@ -22,7 +22,7 @@
 //           analyzed twice.
 //   kAmd    AMD alone: analysis several times faster on large meshes for somewhat more fill; for
 //           a single factorization.
-// (Measurements of each choice: BENCHMARKS.md, "Figures moved out of the code".)
+// (Measurements of each choice: docs/measurements.md, "Figures moved out of the code".)
 //
 // CHOLMOD's OpenMP regions run as the process's OpenMP runtime runs them (the sa command runs
 // them serially: frontends/cli/serial_openmp.h). If CHOLMOD fails for a reason other than an

@@ -22,7 +22,7 @@ constexpr double kLargestUsefulShare = 0.85;
 /// How far ahead of the column being read the substitutions prefetch the factor: 256 values
 /// (2 KB). The factor streams from memory after a factorization, and the hardware prefetcher
 /// stops at page boundaries (bench/triangular_solve.cpp --refactor measures it on 3D factors;
-/// BENCHMARKS.md, "Triangular solves alone"); farther ahead was no better.
+/// docs/measurements.md, "Triangular solves alone"); farther ahead was no better.
 constexpr int kPrefetchAhead = 256;
 
 /// Prefetches the n values from `from` on (one request per 64-byte line).
@@ -52,7 +52,7 @@ double fixed_order_dot(const double* __restrict a, const double* __restrict b, i
 /// block, in order. Eigen's blocked triangular solve and gemv, a triangle pass then a rectangle
 /// pass, and panels of eight columns updating the rows below at once were no faster, and the
 /// panels slower on factors of many narrow supernodes (bench/triangular_solve.cpp --refactor;
-/// BENCHMARKS.md, "Triangular solves alone").
+/// docs/measurements.md, "Triangular solves alone").
 void supernode_forward(const double* L, int m, int k, double* x) {
     for (int j = 0; j < k; ++j) {
         const double* column = L + std::ptrdiff_t(j) * m;

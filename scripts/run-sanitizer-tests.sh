@@ -2,7 +2,7 @@
 # Sets up, builds with clang and -fsanitize=address,undefined (build-sanitized.sh) and runs tests
 # under the sanitizers: any report (an invalid access, undefined behaviour, a leak) fails its
 # test. With no argument: everything, and the whole test suite through ctest (CI's second phase,
-# .ci/run; BENCHMARKS.md, "Reliability"). With arguments: only those test executables
+# .ci/run; docs/measurements.md, "Reliability"). With arguments: only those test executables
 # (GoogleTest), each run on its own. Leaks inside third-party libraries are suppressed by name in
 # tests/sanitizers/lsan.supp, never the project's own.
 set -euo pipefail
@@ -16,7 +16,7 @@ export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0"
 export ASAN_SYMBOLIZER_PATH=${ASAN_SYMBOLIZER_PATH:-$(command -v llvm-symbolizer-14 || true)}
 # Known findings of the whole suite under clang, not sanitizer reports, each left out by name
-# (BENCHMARKS.md, "The whole suite sanitized"):
+# (docs/measurements.md, "The whole suite sanitized"):
 # - IntegrableField.SameFieldAsBeforeOnANoisyTorus pins energies to gcc's floating point; clang's
 #   differ from the first iteration;
 # - SerialOpenMP checks the sa command's GOMP_parallel (libgomp); clang's OpenMP is libomp.

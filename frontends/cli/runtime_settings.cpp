@@ -13,13 +13,13 @@
 // this project is measured on, a first touch of a 4 KB page costs about 11 us (a 64 MB memset:
 // 189 ms the first time, 3.6 ms the second), so that a small problem spent a third of its time in
 // page faults: tlc/stgc-3d took 3,600 faults and 0.117 s with glibc's malloc, 1,700 and 0.078 s
-// with these settings; tlc/cube 0.051 -> 0.042 s (perf stat -r 8, BENCHMARKS.md).
+// with these settings; tlc/cube 0.051 -> 0.042 s (perf stat -r 8, docs/measurements.md).
 //
 // narenas:1 and oversize_threshold:0: every thread and every size allocates from arena 0 (each
 // further arena would also map its own metadata: eight arenas took `sa --help` from 14 to 29 MB).
 // The hot loops do not allocate; botijo's default run took the same time with one arena as with
 // jemalloc's eight. (A hook that mapped each growth of that arena populated was measured and
-// dropped: BENCHMARKS.md, "What the sa command does to its own process".)
+// dropped: docs/measurements.md, "What the sa command does to its own process".)
 #ifndef SA_SYSTEM_ALLOCATOR
 extern "C" {
 // NOLINTNEXTLINE: the name and type are jemalloc's interface.
@@ -48,7 +48,7 @@ __attribute__((constructor(101))) void one_blas_thread() {
 /// model number, and takes the SSE3 ones ("Prescott") for a model it does not know, even when the
 /// CPU has AVX2 or AVX-512: on a VM reporting an "Intel(R) Xeon(R) Processor" of family 6, model
 /// 207, large factorizations were much slower with them than with its AVX2 or AVX-512 ones
-/// (figures: BENCHMARKS.md, PolyCube). Then the kernels the CPU's features allow are chosen
+/// (figures: docs/measurements.md, PolyCube). Then the kernels the CPU's features allow are chosen
 /// instead, as OPENBLAS_CORETYPE would have at start: SkylakeX (AVX-512 F, BW, DQ, VL) or Haswell
 /// (AVX2, FMA). Nothing when OPENBLAS_CORETYPE is set, or OpenBLAS is not the BLAS.
 void blas_kernels_for_this_cpu() {

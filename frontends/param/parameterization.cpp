@@ -85,7 +85,7 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
     // After the first, the rounds of the optimal bound run in the submesh mode unless the caller
     // asks for the full mode (or E_theta needs it): each solves regions around the simplices
     // within optimal_bound_band of the bound, the rest fixed (camelhead.off: delta_con 1.827 in
-    // 0.9 s, against 1.828 in 26-36 s for the full mode's rounds; BENCHMARKS.md).
+    // 0.9 s, against 1.828 in 26-36 s for the full mode's rounds; docs/measurements.md).
     OptimalBoundOptions rounds;
     rounds.rounds = std::max(1, options.optimal_bound_rounds);
     rounds.tolerance = options.optimal_bound_tolerance;

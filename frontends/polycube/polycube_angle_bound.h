@@ -16,7 +16,7 @@
 // bounds max delta_con of any valid PolyCube map of these labels on this mesh, whatever the
 // solver: a chart that ends in a sliver of a fraction of a degree at a vertex on its edge with
 // another chart, where it must open to 180 degrees, forces a distortion in the hundreds
-// (BENCHMARKS.md, PolyCube).
+// (docs/measurements.md, PolyCube).
 //
 // Angles in radians; positions in any units (angles do not see them).
 

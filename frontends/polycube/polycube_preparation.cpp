@@ -115,7 +115,7 @@ Index backward_before_repair(const OrientedLabelling& l) {
 /// Whether labelling `b` is to be preferred to `a`: usable where `a` is not, else fewer chart
 /// boundaries that turn back, else fewer strongly backward edges before the repair (labels that
 /// needed less relabelling follow the shape better: on cup the cube cover of the other folds
-/// several times more, BENCHMARKS.md), else a better l1 alignment (polycube_orientation.h).
+/// several times more, docs/measurements.md), else a better l1 alignment (polycube_orientation.h).
 bool preferred(const OrientedLabelling& b, const OrientedLabelling& a) {
     if (a.error.empty() != b.error.empty()) return b.error.empty();
     if (b.turning.size() != a.turning.size()) return b.turning.size() < a.turning.size();

@@ -275,7 +275,7 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
     /// r-SA the planes stay free and only the anchored simplex's trace holds the scale).
     /// Planarity alone (on A) is homogeneous in the map's scale, as are the conformal and angle
     /// barriers, so E~_assembly fell by shrinking the map where its residuals were large (the
-    /// median simplex scale fell several times while the anchor's stayed near 1; BENCHMARKS.md,
+    /// median simplex scale fell several times while the anchor's stayed near 1; docs/measurements.md,
     /// PolyCube). The paper's 5.3 keeps the planes of the initial map; the
     /// vertex stage moves them again (each plane one variable).
     void add_plane_offsets(SimplexAssemblyEngine<3>& engine, const PluginStage<3>& stage) const {
@@ -429,7 +429,7 @@ PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSol
     // (add_plane_offsets), which needs each boundary tetrahedron's translation. Without the
     // offsets the assembly shrank the map (with r-SA the median simplex scale could fall tenfold,
     // the smallest a hundredfold more), so a tiny E~ did not mean planar charts, and runs ended
-    // assembled and unverified (BENCHMARKS.md, PolyCube).
+    // assembled and unverified (docs/measurements.md, PolyCube).
     o.variant = Variant::kFull;
     log_line(logger, "polycube: " + std::to_string(independent_loops(prepared.boundary)) +
                          " independent loops (handles) in the solid; f-SA, the planes held at "

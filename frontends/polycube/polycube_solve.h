@@ -61,7 +61,7 @@ struct PolycubeSolveOptions {
     /// the planes is inversion-free but its conformal barrier is far above the disassembled
     /// simplices' (S3: 1.7e13 against 1.2e5), so the default hands over the first valid
     /// recovered mesh: each assembly iteration on a 30k-tetrahedron mesh costs tens of seconds
-    /// and a vertex-stage iteration under one (BENCHMARKS.md, PolyCube).
+    /// and a vertex-stage iteration under one (docs/measurements.md, PolyCube).
     double handover_ratio = kInfinity;
 };
 

@@ -379,7 +379,7 @@ extern template class SimplexAssemblyEngine<3>;
 
 // The built-in energies' terms, E_m + E_C of the options (SimplexEnergy) and a barrier on a
 // built-in distortion, are compiled once, in builtin_simplex_terms_2d.cpp and _3d.cpp, rather
-// than in every unit that adds one (BENCHMARKS.md, "Build time").
+// than in every unit that adds one (docs/measurements.md, "Build time").
 SA_SIMPLEX_ENERGY_TERMS(extern, 2, SimplexEnergy<2>)
 SA_SIMPLEX_ENERGY_TERMS(extern, 3, SimplexEnergy<3>)
 SA_SIMPLEX_ENERGY_TERMS(extern, 2, DistortionBarrier<2, BuiltinDistortion<2>>)

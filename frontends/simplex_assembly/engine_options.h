@@ -63,7 +63,7 @@ struct AssemblyEngineOptions {
     /// of it; when it runs out, the map reached so far is recovered, verified and reported.
     double max_time_seconds = kInfinity;
     /// Per-element Hessian projection (clamping converged in fewer iterations than the paper's
-    /// shift, kShift: BENCHMARKS.md, "Departures from the paper, measured").
+    /// shift, kShift: docs/measurements.md, "Departures from the paper, measured").
     ProjectionMode projection = ProjectionMode::kClamp;
     double projection_epsilon = 1e-8;
     /// Hessian-only diagonal shift on the translations, times lambda (step 2 of 4.4; the paper

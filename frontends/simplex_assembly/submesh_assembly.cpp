@@ -143,7 +143,7 @@ SolveMode choose_mode(const PreparedProblem<D>& p, const SimplexAssemblyOptions&
     // A fixed boundary around a widespread tangle: the submesh start untangles it in vertex
     // variables (untangle.h) in a few Newton steps on #V x D unknowns, where the full solve's
     // (D + 1) D per simplex couple through the assembly (a 30k-tet hand with 28% of its tets
-    // inverted found no map in the full solve; BENCHMARKS.md, issue 19).
+    // inverted found no map in the full solve; docs/measurements.md, "The fixed-boundary hard class").
     return boundary_fixed(p) ? SolveMode::kSubmesh : SolveMode::kFull;
 }
 

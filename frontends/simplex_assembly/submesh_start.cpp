@@ -163,7 +163,7 @@ SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& 
     // carried through the mesh (handle_rotation_start.h, the start of `sa deform`) are the other
     // start, taken when it has fewer bad simplices; M^0 and the local/global iterations then go
     // on from it, whatever the size of its regions: their lower Q shortens the vertex stage
-    // (deform/botijo, BENCHMARKS.md).
+    // (deform/botijo, docs/measurements.md).
     bool rotations = false;
     if (!input.handles.empty()) {
         HandleRotationStart rotated = handle_rotation_start<D>(p.mesh, p.frames, p.recovery(), x);

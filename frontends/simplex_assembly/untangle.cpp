@@ -157,7 +157,7 @@ UntangleResult untangle(const SimplicialMesh& mesh, const RestFrames<D>& frames,
         }
         // Lower eps only after a full Newton step: a damped one says that Newton is not yet in
         // its local regime for this eps (Garanzha et al. lower it after an inner solve to
-        // convergence). Without this rule a faster schedule stalled (BENCHMARKS.md).
+        // convergence). Without this rule a faster schedule stalled (docs/measurements.md).
         if (record.step < 1.0) return false;
         const double sigma = std::max(1.0 - energy / before, kMinimumDecrease);
         const double mu = (1.0 - sigma) * regularized_determinant(stats.min, eps).value;

@@ -3,7 +3,7 @@
 // rendering, Cairo, OpenMesh) live in shared libraries loaded on first use, so that a command that
 // never touches them does not pay for loading them: linked into every program, they made each
 // start several times slower, a large share of a small mapping problem's whole run
-// (BENCHMARKS.md, "Figures moved out of the code").
+// (docs/measurements.md, "Figures moved out of the code").
 //
 // A plugin `lib<name>.so` exports one extern "C" function `symbol` returning a pointer to a
 // table of C++ function pointers (same compiler, same headers: the types cross unchanged, and so

@@ -3,7 +3,7 @@
 //
 // On the virtual machines this project is measured on, the first write to a fresh 4 KB page is a
 // trap to the hypervisor; mapping a fresh buffer's pages in one madvise(MADV_POPULATE_WRITE) call
-// (Linux 5.14+) was several times faster than faulting them in one by one (BENCHMARKS.md,
+// (Linux 5.14+) was several times faster than faulting them in one by one (docs/measurements.md,
 // "Figures moved out of the code"). The Hessian assembler allocates its per-entry tables once per
 // problem and fills them at once, so it maps them this way. Only the buffers the call is given:
 // nothing process-wide.

@@ -5,7 +5,7 @@
 // Why: one triangular solve per Newton iteration reads the whole factor twice (L, then L^T), one
 // dense supernode after another. CHOLMOD does it on one thread (dtrsv and dgemv per supernode);
 // on a 3D mapping problem's full system it is the largest cost of an iteration after the
-// factorization, with the second core idle (BENCHMARKS.md, "Triangular solves alone",
+// factorization, with the second core idle (docs/measurements.md, "Triangular solves alone",
 // bench/iteration_cost.py). The split is limited by the top, which on a mesh's tree is mostly a
 // chain of large separator supernodes, solved serially.
 //

@@ -78,7 +78,7 @@ TEST(DeformSolve, OptimalBoundLowersBothBounds) {
 TEST(DeformSolve, AFoldedStartIsRepaired) {
     // The right end pushed a quarter of the bar's length into it, the rest shape otherwise: the
     // tetrahedra next to the moved slab fold. (ARAP itself does not fold this bar; the knight of
-    // BENCHMARKS.md is a data case whose ARAP start does.)
+    // docs/measurements.md is a data case whose ARAP start does.)
     BarDeformation bar = small_bar(BarPose::kTranslate);
     for (Index k = 0; k < bar.targets.rows(); ++k) {
         bar.targets.row(k) = bar.mesh.vertices.row(bar.handles[k]);

@@ -91,7 +91,7 @@ TEST_F(PolycubeData, CupsComputedLabelsNoLongerTurnBackAfterTheRepair) {
     std::vector<int> labels = closest_axis_labels(boundary, mesh.vertices);
     ASSERT_TRUE(clean_polycube_labels(boundary, mesh.vertices, labels).clean);
     const LabelRepairReport report = repair_turning_boundaries(boundary, mesh.vertices, labels);
-    EXPECT_EQ(report.turning_before, 3);  // BENCHMARKS.md, PolyCube
+    EXPECT_EQ(report.turning_before, 3);  // docs/measurements.md, PolyCube
     EXPECT_EQ(report.turning_after, 0);
     EXPECT_LE(report.triangles_changed, 50);
     EXPECT_NO_THROW(validate_polycube_labels(mesh, boundary, labels, "cup"));

@@ -6,7 +6,7 @@
 // the start and its assembly must hold every simplex whose vertices are handles at its data,
 // which a fixed boundary with distorted boundary simplices makes impossible (the full solve of
 // tlc/armadillo-598 stalled at lambda = 1e16 with E~_assembly 0.035-0.055 in every variant,
-// BENCHMARKS.md), and a region whose outer vertices are fixed may have no valid map at all.
+// docs/measurements.md), and a region whose outer vertices are fixed may have no valid map at all.
 // When the result still has inverted or degenerate simplices and time is left, the map is
 // untangled in vertex variables (untangle.h) from whichever of the initial map (handles at their
 // targets) and the result has fewer bad simplices, then the vertex stage lowers E_C where it can

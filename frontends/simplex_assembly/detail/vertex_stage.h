@@ -4,7 +4,7 @@
 // minimize mu E_m + E_C over assembled configurations: the same problem as minimizing it over
 // the vertex positions with the handles fixed. In vertex variables it has no penalty term, so
 // Newton keeps its quadratic convergence instead of fighting a condition number of 1e16
-// (measured in BENCHMARKS.md). Starting from the recovered, inversion-free mesh, the barrier and
+// (measured in docs/measurements.md). Starting from the recovered, inversion-free mesh, the barrier and
 // the largest feasible step keep every iterate inversion-free and within the bound.
 //
 // It is the engine (engine.h) in its vertex layout: the per-simplex energies through the
@@ -51,7 +51,7 @@
 namespace sa {
 
 /// The worst simplex's barrier relative to a perfect one's, as a power of e, at the start of a
-/// round. Measured on generated disks with sliver triangles (BENCHMARKS.md, "Robustness"):
+/// round. Measured on generated disks with sliver triangles (docs/measurements.md, "Robustness"):
 /// ranges of 10 to 30 converge, 50 leaves the first factorization failing.
 inline constexpr double kExponentRange = 20.0;
 /// Rounds of a continuation at most.
