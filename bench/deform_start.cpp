@@ -2,8 +2,8 @@
 // rest shape with its handles at their targets (frontends/deform/deform_start.h), on files or on
 // the generated bar of the paper's Figure 16. Prints one JSON line: the case, its size, the
 // start's inverted and degenerate simplices, its distortion (max and volume-weighted mean, the
-// rules of geometry/map_quality.h), the iterations and why they stopped, the time, and how many
-// inverted simplices show on the boundary surface (have a boundary facet).
+// rules of geometry/quality/map_quality.h), the iterations and why they stopped, the time, and how
+// many inverted simplices show on the boundary surface (have a boundary facet).
 //
 //   bench_deform_start --rest R --targets T [--handles H] [--name NAME]
 //   bench_deform_start --bar bend|twist|translate
@@ -18,7 +18,7 @@
 #include "frontends/deform/deform_start.h"
 #include "frontends/output/pose_picture.h"
 #include "geometry/io/mesh_file.h"
-#include "geometry/mesh_topology.h"
+#include "geometry/mesh/mesh_topology.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
 #include "tests/fixtures/bar_deformation.h"

@@ -19,9 +19,9 @@
 #include <type_traits>
 
 #include "geometry/io/mesh_file.h"
-#include "geometry/map_quality.h"
-#include "geometry/mesh_generators.h"
-#include "geometry/rest_frames.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/mesh/rest_frames.h"
+#include "geometry/quality/map_quality.h"
 #include "optim/errors.h"
 #include "tests/fixtures/generated_problems.h"
 

@@ -149,7 +149,7 @@ def run_case(a, case, variant, work):
         return row
     rep = json.load(open(report))
     row['elements'] = rep['input']['simplices']
-    if 'infeasible' in rep:  # diagnosed before optimizing (geometry/handle_feasibility.h)
+    if 'infeasible' in rep:  # diagnosed before optimizing (geometry/quality/handle_feasibility.h)
         f = rep['infeasible']
         row['status'] = 'diagnosed infeasible (exit %d): %d of %d fixed simplices inverted, %d flat' % (
             r['code'], f['inverted'], f['fixed_simplices'], f['flat'])

@@ -145,7 +145,7 @@ def large_case(a, work):
 
 def flat_ball_with_slivers(n, toward, step, pull, path):
     """The class of OptCuts' golf.obj, as tests/frontends/param_test.cpp builds it: the octahedral
-    sphere of n^2 triangles per face (geometry/mesh_generators.h), the star of the vertex nearest
+    sphere of n^2 triangles per face (geometry/mesh/mesh_generators.h), the star of the vertex nearest
     `toward` removed (a one-vertex hole), bent, squashed to 3% of its height, and every `step`-th
     triangle made a sliver by moving a vertex `pull` of the way to its opposite edge's middle."""
     ids, points, faces = {}, [], []

@@ -1,7 +1,7 @@
-// The ARAP local step's rotation per element (geometry/rotation_fit.h) against the SVD it
-// replaced (closest_rotation() of geometry/disassembly.h, Eigen's 3 x 3 JacobiSVD), on matrices
-// shaped like the local step's A_i C_i: rotations times a distortion of singular values in
-// [0.7, 1.4], a tenth of them reflected (inverted simplices).
+// The ARAP local step's rotation per element (geometry/maps/rotation_fit.h) against the SVD it
+// replaced (closest_rotation() of frontends/simplex_assembly/disassembly.h, Eigen's 3 x 3
+// JacobiSVD), on matrices shaped like the local step's A_i C_i: rotations times a distortion of
+// singular values in [0.7, 1.4], a tenth of them reflected (inverted simplices).
 //   Svd       the old local step
 //   Cold      fit_rotation(M): no hint (an ARAP run's first iteration)
 //   Warm/k    fit_rotation(M, hint) with the hint the answer for M turned by 10^-k radians about a
@@ -15,8 +15,8 @@
 #include <random>
 #include <vector>
 
-#include "geometry/disassembly.h"
-#include "geometry/rotation_fit.h"
+#include "frontends/simplex_assembly/disassembly.h"
+#include "geometry/maps/rotation_fit.h"
 
 namespace {
 

@@ -6,8 +6,8 @@
 #include <iostream>
 
 #include "frontends/simplex_assembly/map_solve.h"
-#include "geometry/mesh_generators.h"
-#include "geometry/mesh_topology.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/mesh/mesh_topology.h"
 
 int main() {
     sa::MappingProblem problem;

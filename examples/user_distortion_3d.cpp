@@ -7,9 +7,9 @@
 
 #include "energies/distortion_barrier.h"
 #include "frontends/simplex_assembly/map_solve.h"
-#include "geometry/mesh_generators.h"
-#include "geometry/mesh_topology.h"
-#include "geometry/rest_frames.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/mesh/mesh_topology.h"
+#include "geometry/mesh/rest_frames.h"
 
 // (|A|^2 + |A^-1|^2) / 6: 1 at a rotation, infinite as det A goes to 0.
 struct SymmetricDirichlet {

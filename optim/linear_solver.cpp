@@ -47,8 +47,8 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 
 /// Fill-reducing ordering for Eigen's simplicial factorizations by SuiteSparse's AMD (the one
 /// CHOLMOD uses) instead of Eigen's own: the same fill, and an analysis about ten times faster
-/// (docs/measurements.md, "Figures moved out of the code"), which matters when every submesh is analyzed
-/// once and factored a few times. Eigen hands it the full symmetric pattern.
+/// (docs/measurements.md, "Figures moved out of the code"), which matters when every submesh is
+/// analyzed once and factored a few times. Eigen hands it the full symmetric pattern.
 struct SuiteSparseAmdOrdering {
     template <class Matrix, class Permutation>
     void operator()(const Matrix& symmetric, Permutation& permutation) const {

@@ -10,8 +10,8 @@
 //   kAuto                kEigenLDLT when CHOLMOD's analysis counts fewer than kAutoSupernodalFlops
 //                        for the factorization (the supernodes are then too small for BLAS-3 to
 //                        pay), kCholmodSupernodal otherwise: the crossing point of the two on
-//                        systems from 7.9e5 to 3.6e8 flops (docs/measurements.md, "Figures moved out of
-//                        the code").
+//                        systems from 7.9e5 to 3.6e8 flops (docs/measurements.md, "Figures moved
+//                        out of the code").
 // The symbolic analysis (fill-reducing ordering) is done by analyze() and reused by every
 // factorize() until analyze() is called again. CHOLMOD's ordering is chosen by FillOrdering:
 //   kBest   CHOLMOD's default: AMD, then METIS when AMD's fill is large, the better kept. Pays off

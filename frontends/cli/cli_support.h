@@ -8,7 +8,7 @@
 
 #include "energies/distortion.h"
 #include "geometry/io/mesh_file.h"
-#include "geometry/simplicial_mesh.h"
+#include "geometry/mesh/simplicial_mesh.h"
 #include "optim/errors.h"
 #include "optim/logger.h"
 #include "optim/types.h"

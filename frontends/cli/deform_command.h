@@ -14,7 +14,7 @@
 #include "frontends/cli/output_plan.h"
 #include "frontends/deform/deform_options.h"
 #include "frontends/deform/handle_targets.h"
-#include "geometry/simplicial_mesh.h"
+#include "geometry/mesh/simplicial_mesh.h"
 
 namespace sa::cli {
 

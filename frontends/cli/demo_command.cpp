@@ -11,10 +11,10 @@
 #include "frontends/output/layout_picture.h"
 #include "frontends/output/map_output.h"
 #include "frontends/simplex_assembly/map_solve.h"
-#include "geometry/harmonic_map.h"
 #include "geometry/io/vtk_io.h"
-#include "geometry/map_quality.h"
-#include "geometry/mesh_generators.h"
+#include "geometry/maps/harmonic_map.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/quality/map_quality.h"
 #include "optim/errors.h"
 
 namespace sa::cli {

@@ -18,7 +18,7 @@
 #include "geometry/io/mesh_file.h"
 #include "geometry/io/obj_io.h"
 #include "geometry/io/vtk_io.h"
-#include "geometry/subdivision.h"
+#include "geometry/mesh/subdivision.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
 

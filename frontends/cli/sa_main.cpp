@@ -7,9 +7,10 @@
 //   sa deform     a pose of a tet mesh (or planar triangles) from its handles' targets alone
 //   sa subdivide  Loop subdivision (to build large test meshes)
 // Exit status (cli_support.h, README.md): 0 verified success, 1 a result that did not pass
-// verification or a problem whose handles rule out any solution (geometry/handle_feasibility.h),
-// 2 bad input, 3 internal error, 4 out of memory; killed by SIGINT, SIGTERM, SIGHUP or SIGPIPE
-// after removing the run's outputs (interruption.h). Every error is one line on stderr.
+// verification or a problem whose handles rule out any solution
+// (geometry/quality/handle_feasibility.h), 2 bad input, 3 internal error, 4 out of memory; killed
+// by SIGINT, SIGTERM, SIGHUP or SIGPIPE after removing the run's outputs (interruption.h). Every
+// error is one line on stderr.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cerrno>
@@ -29,7 +30,7 @@
 #include "frontends/cli/polycube_command.h"
 #include "frontends/cli/runtime_settings.h"
 #include "frontends/cli/seamless_command.h"
-#include "geometry/handle_feasibility.h"
+#include "geometry/quality/handle_feasibility.h"
 #include "optim/errors.h"
 
 namespace {

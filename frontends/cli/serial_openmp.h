@@ -7,8 +7,8 @@
 // every supernode with a compiled-in 4 threads. libgomp starts a team for each and wakes it
 // through futex system calls, which are slow on these virtual machines, and CHOLMOD's threads
 // never paid on 2 cores. The toolkit's parallelism is TBB's, over elements and submeshes.
-// Measured gains on tlc/param2d, tlc/stgc-3d and deform/botijo are in docs/measurements.md ("What the
-// sa command does to its own process").
+// Measured gains on tlc/param2d, tlc/stgc-3d and deform/botijo are in docs/measurements.md ("What
+// the sa command does to its own process").
 //
 // How: serial_openmp.cpp defines GOMP_parallel, the entry point GCC's code calls for `#pragma omp
 // parallel`, and is linked into the command only. The dynamic linker looks in the executable

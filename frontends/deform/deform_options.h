@@ -11,8 +11,8 @@
 // largest d^c and the largest d^vol reached as its next two bounds (just above them), the rounds
 // after the first in the submesh mode around the simplices near a bound (optimal_bound.h).
 
-#include "geometry/arap_deformation.h"
-#include "geometry/disassembly.h"
+#include "frontends/simplex_assembly/disassembly.h"
+#include "geometry/maps/arap_deformation.h"
 
 namespace sa {
 
@@ -34,7 +34,7 @@ struct DeformOptions {
     /// (d^c = d^vol = 1); a bounded-distortion projection (bounded:K) keeps more of the start
     /// but must land inside both bounds.
     Initialization initialization = Initialization::kClosestRotation;
-    /// The ARAP start (geometry/arap_deformation.h).
+    /// The ARAP start (geometry/maps/arap_deformation.h).
     ArapOptions start;
     /// Wall-clock limit on the whole run, in seconds.
     double max_time_seconds = kInfinity;

@@ -2,8 +2,8 @@
 
 #include "energies/difference_energy.h"
 #include "energies/distortion_barrier.h"
-#include "geometry/map_quality.h"
-#include "geometry/rest_frames.h"
+#include "geometry/mesh/rest_frames.h"
+#include "geometry/quality/map_quality.h"
 #include "optim/stopwatch.h"
 
 namespace sa {

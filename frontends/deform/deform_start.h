@@ -1,16 +1,16 @@
 #pragma once
 // The start of deformation posing (the paper's 5.4): an ARAP deformation of the rest shape with
-// the handles fixed at their targets (geometry/arap_deformation.h, Anderson-accelerated), and
+// the handles fixed at their targets (geometry/maps/arap_deformation.h, Anderson-accelerated), and
 // how good it is: inverted and degenerate simplices and the conformal, isometric and volumetric
-// distortion of the others (geometry/map_quality.h). It may invert simplices; Simplex Assembly
-// starts from it (E_m = sum_i |A_i - A_i^0|^2 to its linear parts A_i^0) and repairs them.
+// distortion of the others (geometry/quality/map_quality.h). It may invert simplices; Simplex
+// Assembly starts from it (E_m = sum_i |A_i - A_i^0|^2 to its linear parts A_i^0) and repairs them.
 
 #include <Eigen/Core>
 #include <string>
 
 #include "frontends/deform/handle_targets.h"
-#include "geometry/arap_deformation.h"
-#include "geometry/map_quality.h"
+#include "geometry/maps/arap_deformation.h"
+#include "geometry/quality/map_quality.h"
 #include "optim/logger.h"
 
 namespace sa {

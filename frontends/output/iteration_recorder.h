@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/simplicial_mesh.h"
+#include "geometry/mesh/simplicial_mesh.h"
 
 namespace sa {
 

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "frontends/simplex_assembly/map_solve.h"
-#include "geometry/handle_feasibility.h"
+#include "geometry/quality/handle_feasibility.h"
 
 namespace sa {
 

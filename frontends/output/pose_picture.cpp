@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "frontends/output/surface_value_picture.h"
-#include "geometry/map_quality.h"
-#include "geometry/mesh_topology.h"
-#include "geometry/rest_frames.h"
+#include "geometry/mesh/mesh_topology.h"
+#include "geometry/mesh/rest_frames.h"
+#include "geometry/quality/map_quality.h"
 #include "optim/errors.h"
 
 namespace sa {

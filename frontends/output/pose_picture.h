@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/simplicial_mesh.h"
+#include "geometry/mesh/simplicial_mesh.h"
 
 namespace sa {
 

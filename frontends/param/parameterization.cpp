@@ -5,11 +5,11 @@
 #include <sstream>
 
 #include "frontends/simplex_assembly/map_rank.h"
-#include "geometry/boundary_fans.h"
-#include "geometry/boundary_loops.h"
-#include "geometry/initial_maps.h"
-#include "geometry/map_quality.h"
-#include "geometry/rest_frames.h"
+#include "geometry/maps/initial_maps.h"
+#include "geometry/mesh/boundary_fans.h"
+#include "geometry/mesh/boundary_loops.h"
+#include "geometry/mesh/rest_frames.h"
+#include "geometry/quality/map_quality.h"
 #include "optim/enum_names.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"

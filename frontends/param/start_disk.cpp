@@ -1,7 +1,7 @@
 #include "frontends/param/start_disk.h"
 
-#include "geometry/boundary_loops.h"
-#include "geometry/hole_filling.h"
+#include "geometry/mesh/boundary_loops.h"
+#include "geometry/mesh/hole_filling.h"
 
 namespace sa {
 

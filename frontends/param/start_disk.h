@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "geometry/mesh_topology.h"
-#include "geometry/simplicial_mesh.h"
+#include "geometry/mesh/mesh_topology.h"
+#include "geometry/mesh/simplicial_mesh.h"
 
 namespace sa {
 

@@ -4,8 +4,8 @@
 #include <sstream>
 
 #include "frontends/simplex_assembly/map_rank.h"
-#include "geometry/initial_maps.h"
-#include "geometry/map_quality.h"
+#include "geometry/maps/initial_maps.h"
+#include "geometry/quality/map_quality.h"
 #include "optim/enum_names.h"
 #include "optim/stopwatch.h"
 #include "optim/time_budget.h"

@@ -20,8 +20,8 @@
 
 #include "frontends/param/start_disk.h"
 #include "frontends/simplex_assembly/vertex_descent.h"
-#include "geometry/initial_maps.h"
-#include "geometry/mesh_topology.h"
+#include "geometry/maps/initial_maps.h"
+#include "geometry/mesh/mesh_topology.h"
 
 namespace sa {
 

@@ -9,7 +9,7 @@
 //   three or more (a PolyCube corner):   pi/2, pi or 3 pi/2 for each.
 // The map is linear on every tetrahedron, and a linear map whose singular values have ratio K
 // (restricted to the plane of a rest triangle: at most the tetrahedron's sigma_max / sigma_min,
-// delta_con in geometry/map_quality.h) takes an angle alpha to an angle between
+// delta_con in geometry/quality/map_quality.h) takes an angle alpha to an angle between
 // 2 atan(tan(alpha/2) / K) and 2 atan(K tan(alpha/2)). A wedge of rest angles alpha_i that must
 // become beta therefore needs some tetrahedron under it with delta_con >= the least K for which
 // those ranges can sum to beta (wedge_distortion_bound()). The largest such K over the boundary

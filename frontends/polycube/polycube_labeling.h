@@ -5,8 +5,8 @@
 // edges) with one label; the PolyCube map makes each chart planar and orthogonal to its axis.
 //
 // Labels are 0..5 = +X, -X, +Y, -Y, +Z, -Z (2 axis + 1 on the negative side), per boundary
-// triangle in TetBoundary's numbering (geometry/tet_boundary.h). In .flags files (one label per
-// tet facet, -1 on interior facets; geometry/io/polycube_labels_io.h) the parity is a sign
+// triangle in TetBoundary's numbering (geometry/mesh/tet_boundary.h). In .flags files (one label
+// per tet facet, -1 on interior facets; geometry/io/polycube_labels_io.h) the parity is a sign
 // convention that files do not agree on, so a file's label gives the axis only and the side comes
 // from the geometry: per chart (a connected set of triangles with one file label), the sign of
 // the area-weighted outward normal along the axis. Which convention the file followed is
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/tet_boundary.h"
+#include "geometry/mesh/tet_boundary.h"
 
 namespace sa {
 

@@ -16,7 +16,7 @@
 // it lowers E by more than rounding (1e-9 relative), so that an axis-aligned input keeps R = I.
 #include <Eigen/Core>
 
-#include "geometry/tet_boundary.h"
+#include "geometry/mesh/tet_boundary.h"
 
 namespace sa {
 

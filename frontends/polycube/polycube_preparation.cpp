@@ -10,7 +10,7 @@
 #include "frontends/polycube/polycube_label_transfer.h"
 #include "geometry/io/mesh_file.h"
 #include "geometry/io/polycube_labels_io.h"
-#include "geometry/mesh_topology.h"
+#include "geometry/mesh/mesh_topology.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
 

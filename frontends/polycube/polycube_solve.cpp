@@ -15,9 +15,9 @@
 #include "frontends/polycube/polycube_planes.h"
 #include "frontends/polycube/polycube_terms.h"
 #include "frontends/simplex_assembly/untangle.h"
-#include "geometry/rest_frames.h"
-#include "geometry/submesh.h"
-#include "geometry/tet_boundary.h"
+#include "geometry/mesh/rest_frames.h"
+#include "geometry/mesh/submesh.h"
+#include "geometry/mesh/tet_boundary.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
 
@@ -275,8 +275,8 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
     /// r-SA the planes stay free and only the anchored simplex's trace holds the scale).
     /// Planarity alone (on A) is homogeneous in the map's scale, as are the conformal and angle
     /// barriers, so E~_assembly fell by shrinking the map where its residuals were large (the
-    /// median simplex scale fell several times while the anchor's stayed near 1; docs/measurements.md,
-    /// PolyCube). The paper's 5.3 keeps the planes of the initial map; the
+    /// median simplex scale fell several times while the anchor's stayed near 1;
+    /// docs/measurements.md, PolyCube). The paper's 5.3 keeps the planes of the initial map; the
     /// vertex stage moves them again (each plane one variable).
     void add_plane_offsets(SimplexAssemblyEngine<3>& engine, const PluginStage<3>& stage) const {
         if (stage.mesh == nullptr || stage.frames == nullptr) return;

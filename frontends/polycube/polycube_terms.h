@@ -4,7 +4,7 @@
 // element, the simplices or vertices whose variables it takes, in the order the energy expects.
 // The engine maps them to variable indices (linear_variables(t) is vec(A_t), 9 entries,
 // column-major; vertex v is 3 entries in the vertex stage). Rest frames keep the mesh's axes
-// (geometry/rest_frames.h), so rest edge vectors are coordinate differences.
+// (geometry/mesh/rest_frames.h), so rest edge vectors are coordinate differences.
 //
 //   planarity_elements         Ẽ_assembly, A-form: per labelled boundary triangle, its tet.
 //   planarity_vertex_elements  the same in vertex form: per boundary triangle, its 3 vertices.

@@ -1,7 +1,8 @@
 #pragma once
 // Verification of a PolyCube map from its output vertex positions (issue 21): the map passes
 // when every check holds.
-//   - no inverted and no degenerate tetrahedron (geometry/map_quality.h's rules, against each
+//   - no inverted and no degenerate tetrahedron (geometry/quality/map_quality.h's rules, against
+//   each
 //     rest tetrahedron's orientation);
 //   - every chart planar: the spread of its vertices along its axis at most `planarity_tolerance`
 //     times the output's bounding-box diagonal, and its area-weighted normal on its label's side;
@@ -18,7 +19,7 @@
 
 #include "frontends/polycube/polycube_labeling.h"
 #include "frontends/polycube/tet_boundary_fans.h"
-#include "geometry/map_quality.h"
+#include "geometry/quality/map_quality.h"
 
 namespace sa {
 

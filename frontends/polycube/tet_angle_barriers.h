@@ -33,8 +33,8 @@
 // positive semidefinite Hessian for 9 x 9 or 12 x 12 eigen-decompositions instead of one of the
 // whole element. In A-form the rank-one term is the only coupling between the K tetrahedra, and
 // a dense 9K x 9K element makes the Newton system's factorization several times denser
-// (docs/measurements.md, PolyCube); so the A-forms declare hessian_block = 9 (their Hessians are the
-// diagonal 9 x 9 blocks, side by side) and their project_hessian() replaces the rank-one term's
+// (docs/measurements.md, PolyCube); so the A-forms declare hessian_block = 9 (their Hessians are
+// the diagonal 9 x 9 blocks, side by side) and their project_hessian() replaces the rank-one term's
 // blocks by those of its block-diagonal majorizer
 //     f'' grad theta grad theta^T  <=  K f'' sum_k grad phi_k grad phi_k^T
 // (Cauchy-Schwarz: (sum_k g_k . z_k)^2 <= K sum_k (g_k . z_k)^2), which keeps the Newton step a

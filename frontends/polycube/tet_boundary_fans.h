@@ -14,7 +14,7 @@
 #include <array>
 #include <vector>
 
-#include "geometry/tet_boundary.h"
+#include "geometry/mesh/tet_boundary.h"
 
 namespace sa {
 

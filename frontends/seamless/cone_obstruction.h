@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "geometry/cross_field.h"
-#include "geometry/mesh_topology.h"
+#include "frontends/seamless/cross_field.h"
+#include "geometry/mesh/mesh_topology.h"
 
 namespace sa {
 

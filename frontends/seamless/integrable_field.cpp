@@ -5,8 +5,8 @@
 
 #include "energies/edge_assembly_energy.h"
 #include "energies/simplex_energy.h"
+#include "frontends/seamless/frame_field.h"
 #include "frontends/simplex_assembly/engine.h"
-#include "geometry/frame_field.h"
 #include "optim/errors.h"
 
 namespace sa {

@@ -23,8 +23,8 @@
 #include <vector>
 
 #include "frontends/simplex_assembly/engine_options.h"
-#include "geometry/mesh_topology.h"
-#include "geometry/rest_frames.h"
+#include "geometry/mesh/mesh_topology.h"
+#include "geometry/mesh/rest_frames.h"
 #include "optim/logger.h"
 #include "optim/newton_summary.h"
 

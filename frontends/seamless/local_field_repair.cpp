@@ -4,9 +4,9 @@
 #include <cstdio>
 #include <sstream>
 
+#include "frontends/seamless/frame_field.h"
 #include "frontends/seamless/seamless_parameterization.h"
-#include "geometry/frame_field.h"
-#include "geometry/submesh.h"
+#include "geometry/mesh/submesh.h"
 #include "optim/stopwatch.h"
 #include "optim/time_budget.h"
 

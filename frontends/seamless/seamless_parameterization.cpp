@@ -5,9 +5,9 @@
 #include <sstream>
 
 #include "frontends/seamless/cone_obstruction.h"
-#include "geometry/cut_graph.h"
-#include "geometry/frame_field.h"
-#include "geometry/mesh_topology.h"
+#include "frontends/seamless/cut_graph.h"
+#include "frontends/seamless/frame_field.h"
+#include "geometry/mesh/mesh_topology.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
 #include "optim/time_budget.h"

@@ -25,11 +25,11 @@
 #include <string>
 #include <vector>
 
+#include "frontends/seamless/cross_field.h"
 #include "frontends/seamless/integrable_field.h"
 #include "frontends/seamless/local_field_repair.h"
-#include "geometry/cross_field.h"
-#include "geometry/map_quality.h"
-#include "geometry/seamless_poisson.h"
+#include "frontends/seamless/seamless_poisson.h"
+#include "geometry/quality/map_quality.h"
 
 namespace sa {
 

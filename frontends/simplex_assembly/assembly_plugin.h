@@ -33,8 +33,8 @@
 #include <vector>
 
 #include "frontends/simplex_assembly/engine.h"
-#include "geometry/rest_frames.h"
-#include "geometry/simplicial_mesh.h"
+#include "geometry/mesh/rest_frames.h"
+#include "geometry/mesh/simplicial_mesh.h"
 
 namespace sa {
 

@@ -8,8 +8,8 @@
 #include "energies/boundary_angle_energy.h"
 #include "energies/edge_assembly_energy.h"
 #include "energies/vertex_copy_energies.h"
-#include "geometry/homology_loops.h"
-#include "geometry/tagged_simplices.h"
+#include "frontends/simplex_assembly/tagged_simplices.h"
+#include "geometry/mesh/homology_loops.h"
 
 namespace sa {
 
@@ -148,7 +148,7 @@ void AssemblyProblem<D>::build_reduced(const AssemblyInput<D>& in) {
     // Eq. 7 alone glues the simplices only along contractible loops (the Appendix glues simplex
     // by simplex): around a hole or a handle the A_i may agree across every facet and still
     // integrate to a map that does not close. Omega_s therefore also follows loops generating the
-    // mesh's H1 (geometry/homology_loops.h; a solid's lie on its boundary): with Eq. 9 at each
+    // mesh's H1 (geometry/mesh/homology_loops.h; a solid's lie on its boundary): with Eq. 9 at each
     // loop vertex, sum_k A_{p_k} e_k over a loop telescopes to zero. The Steiner tree ties the
     // loops to the handles or, in a part without handles, to its anchored simplex, which joins
     // Omega_s so that its fixed translation removes the loops' common translation.

@@ -7,7 +7,7 @@
 #include <functional>
 
 #include "energies/barrier.h"
-#include "geometry/map_quality.h"
+#include "geometry/quality/map_quality.h"
 
 namespace sa {
 

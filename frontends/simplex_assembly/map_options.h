@@ -7,8 +7,8 @@
 
 #include "energies/distortion.h"
 #include "energies/simplex_energy.h"
+#include "frontends/simplex_assembly/disassembly.h"
 #include "frontends/simplex_assembly/engine_options.h"
-#include "geometry/disassembly.h"
 #include "optim/hessian_projection.h"
 #include "optim/linear_solver.h"
 #include "optim/time_budget.h"

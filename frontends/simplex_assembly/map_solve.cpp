@@ -10,7 +10,7 @@
 #include "frontends/simplex_assembly/detail/submesh_assembly.h"
 #include "frontends/simplex_assembly/detail/untangle_fallback.h"
 #include "frontends/simplex_assembly/detail/vertex_stage.h"
-#include "geometry/translation_gluing.h"
+#include "frontends/simplex_assembly/translation_gluing.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
 #include "optim/time_budget.h"

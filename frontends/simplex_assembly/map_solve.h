@@ -31,8 +31,8 @@
 #include "frontends/simplex_assembly/map_options.h"
 #include "frontends/simplex_assembly/simplex_term.h"
 #include "frontends/simplex_assembly/stage_trace.h"
-#include "geometry/map_quality.h"
-#include "geometry/simplicial_mesh.h"
+#include "geometry/mesh/simplicial_mesh.h"
+#include "geometry/quality/map_quality.h"
 #include "optim/logger.h"
 #include "optim/newton_summary.h"
 
@@ -100,7 +100,8 @@ struct Verification {
     Index inverted = 0;
     Index degenerate = 0;
     /// Interior vertices (triangles) or edges (tetrahedra) the map wraps around more than once,
-    /// every simplex positive (geometry/local_injectivity.h); counted when none is inverted.
+    /// every simplex positive (geometry/quality/local_injectivity.h); counted when none is
+    /// inverted.
     Index branched = 0;
     Index handles = 0;
     double handle_error = 0.0;      ///< largest |x_h - target_h|, in the map's units

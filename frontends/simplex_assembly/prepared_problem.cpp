@@ -7,11 +7,11 @@
 #include "energies/boundary_angle_energy.h"
 #include "energies/distortion.h"
 #include "energies/simplex_energy.h"
-#include "geometry/boundary_fans.h"
-#include "geometry/disassembly.h"
-#include "geometry/handle_feasibility.h"
-#include "geometry/local_injectivity.h"
-#include "geometry/vertex_recovery.h"
+#include "frontends/simplex_assembly/disassembly.h"
+#include "geometry/maps/vertex_recovery.h"
+#include "geometry/mesh/boundary_fans.h"
+#include "geometry/quality/handle_feasibility.h"
+#include "geometry/quality/local_injectivity.h"
 #include "optim/errors.h"
 #include "optim/stopwatch.h"
 
@@ -461,7 +461,7 @@ void verify_result(const MappingProblem& input, const SimplexAssemblyOptions& op
     v.degenerate = result.final_quality.degenerate;
     if (v.inverted == 0 && v.degenerate == 0) {
         // Every simplex positive does not make the map locally injective: a branch point wraps
-        // its star twice with every simplex positive (geometry/local_injectivity.h).
+        // its star twice with every simplex positive (geometry/quality/local_injectivity.h).
         const MeshTopology own = topology ? MeshTopology{} : mesh_topology(original, input.source);
         const MeshTopology& t = topology ? *topology : own;
         v.branched =

@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "energies/distortion.h"
-#include "geometry/local_injectivity.h"
-#include "geometry/submesh.h"
+#include "geometry/mesh/submesh.h"
+#include "geometry/quality/local_injectivity.h"
 #include "optim/errors.h"
 
 namespace sa {

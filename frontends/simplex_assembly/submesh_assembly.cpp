@@ -12,9 +12,9 @@
 #include "frontends/simplex_assembly/detail/forced_distortion.h"
 #include "frontends/simplex_assembly/detail/submesh_start.h"
 #include "frontends/simplex_assembly/detail/vertex_stage.h"
-#include "geometry/handle_feasibility.h"
-#include "geometry/map_quality.h"
-#include "geometry/submesh.h"
+#include "geometry/mesh/submesh.h"
+#include "geometry/quality/handle_feasibility.h"
+#include "geometry/quality/map_quality.h"
 #include "optim/parallel.h"
 #include "optim/stopwatch.h"
 
@@ -143,7 +143,8 @@ SolveMode choose_mode(const PreparedProblem<D>& p, const SimplexAssemblyOptions&
     // A fixed boundary around a widespread tangle: the submesh start untangles it in vertex
     // variables (untangle.h) in a few Newton steps on #V x D unknowns, where the full solve's
     // (D + 1) D per simplex couple through the assembly (a 30k-tet hand with 28% of its tets
-    // inverted found no map in the full solve; docs/measurements.md, "The fixed-boundary hard class").
+    // inverted found no map in the full solve; docs/measurements.md, "The fixed-boundary hard
+    // class").
     return boundary_fixed(p) ? SolveMode::kSubmesh : SolveMode::kFull;
 }
 

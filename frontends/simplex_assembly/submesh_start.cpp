@@ -7,13 +7,13 @@
 #include "energies/barrier.h"
 #include "frontends/simplex_assembly/detail/forced_distortion.h"
 #include "frontends/simplex_assembly/detail/untangle_fallback.h"
+#include "frontends/simplex_assembly/disassembly.h"
 #include "frontends/simplex_assembly/map_rank.h"
-#include "geometry/arap_local_step.h"
-#include "geometry/branch_points.h"
-#include "geometry/disassembly.h"
-#include "geometry/handle_rotation_start.h"
-#include "geometry/map_quality.h"
-#include "geometry/submesh.h"
+#include "geometry/maps/arap_local_step.h"
+#include "geometry/maps/handle_rotation_start.h"
+#include "geometry/mesh/submesh.h"
+#include "geometry/quality/branch_points.h"
+#include "geometry/quality/map_quality.h"
 #include "optim/anderson_acceleration.h"
 #include "optim/stopwatch.h"
 
@@ -130,8 +130,8 @@ SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& 
         // Folds that are discrete branch points (loops around them turn twice) cannot be repaired
         // by any region with fixed outer vertices; without handles and with a barrier that
         // ignores scale, the map composed with a conformal map of the plane loses them
-        // (geometry/branch_points.h). Every vertex moves but the map keeps its distortion, so the
-        // vertex stage stays on the repaired regions, as for the initial map.
+        // (geometry/quality/branch_points.h). Every vertex moves but the map keeps its distortion,
+        // so the vertex stage stays on the repaired regions, as for the initial map.
         if (input.handles.empty() && options.distortion == DistortionType::kConformal) {
             const std::vector<BranchPoint> points =
                 find_branch_points(p.mesh, p.topology, x, start.bad, options.rings);

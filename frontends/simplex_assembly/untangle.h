@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "frontends/simplex_assembly/stage_trace.h"
-#include "geometry/rest_frames.h"
+#include "geometry/mesh/rest_frames.h"
 #include "optim/hessian_projection.h"
 #include "optim/linear_solver.h"
 #include "optim/logger.h"

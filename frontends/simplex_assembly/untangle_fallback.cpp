@@ -3,7 +3,7 @@
 #include "frontends/simplex_assembly/detail/forced_distortion.h"
 #include "frontends/simplex_assembly/detail/vertex_stage.h"
 #include "frontends/simplex_assembly/map_rank.h"
-#include "geometry/map_quality.h"
+#include "geometry/quality/map_quality.h"
 #include "optim/stopwatch.h"
 
 namespace sa {

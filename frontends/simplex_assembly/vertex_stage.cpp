@@ -6,7 +6,7 @@
 
 #include "energies/boundary_angle_energy.h"
 #include "frontends/simplex_assembly/engine.h"
-#include "geometry/map_quality.h"
+#include "geometry/quality/map_quality.h"
 #include "optim/time_budget.h"
 
 namespace sa {

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/simplicial_mesh.h"
+#include "geometry/mesh/simplicial_mesh.h"
 #include "optim/types.h"
 
 namespace sa {

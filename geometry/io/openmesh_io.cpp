@@ -1,7 +1,7 @@
 #include "geometry/io/openmesh_io.h"
 
+#include "geometry/io/openmesh_plugin.h"
 #include "geometry/io/plugin_library.h"
-#include "geometry/openmesh_plugin.h"
 
 namespace sa {
 

@@ -1,6 +1,6 @@
 #pragma once
 // STL triangle meshes, read through OpenMesh (ASCII and binary). OpenMesh lives in the plugin
-// libsa_openmesh.so, loaded on first use (geometry/openmesh_plugin.h): read_stl throws Error
+// libsa_openmesh.so, loaded on first use (geometry/io/openmesh_plugin.h): read_stl throws Error
 // naming the folders tried when it cannot be found. (PLY files are read without OpenMesh:
 // ply_io.h.)
 //

@@ -1,4 +1,4 @@
-#include "geometry/openmesh_plugin.h"
+#include "geometry/io/openmesh_plugin.h"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "geometry/io/openmesh_traits.h"
 #include "geometry/io/text_reader.h"
-#include "geometry/openmesh_traits.h"
 #include "optim/errors.h"
 
 namespace sa {

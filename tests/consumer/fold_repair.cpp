@@ -8,7 +8,7 @@
 #include "frontends/output/layout_picture.h"
 #include "frontends/output/map_output.h"
 #include "frontends/simplex_assembly/map_solve.h"
-#include "geometry/mesh_generators.h"
+#include "geometry/mesh/mesh_generators.h"
 
 int main(int argc, char** argv) {
     const std::filesystem::path out = argc > 1 ? argv[1] : "fold_repair_out";

@@ -12,8 +12,8 @@
 #include <cmath>
 #include <functional>
 
-#include "geometry/mesh_generators.h"
-#include "geometry/rest_frames.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/mesh/rest_frames.h"
 #include "tests/fixtures/polycube_fixtures.h"
 
 namespace sa {

@@ -28,9 +28,9 @@
 #include <tuple>
 
 #include "geometry/io/mesh_file.h"
-#include "geometry/map_quality.h"
-#include "geometry/mesh_generators.h"
-#include "geometry/mesh_topology.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/mesh/mesh_topology.h"
+#include "geometry/quality/map_quality.h"
 
 extern char** environ;
 
@@ -1008,7 +1008,8 @@ std::vector<Case> catalogue() {
                          two.simplices << box.simplices, box.simplices.array() + int(n);
                          for (Index t = box.num_simplices(); t < two.num_simplices(); ++t)
                              for (int k = 0; k < 4; ++k)
-                                 if (two.simplices(t, k) == int(n + origin)) two.simplices(t, k) = int(corner);
+                                 if (two.simplices(t, k) == int(n + origin))
+                                     two.simplices(t, k) = int(corner);
                          // The copy's origin is used by no tetrahedron now: moved far off.
                          two.vertices.row(n + origin) << 9, 9, 9;
                          in.mesh("two.mesh", two);
@@ -1038,7 +1039,8 @@ std::vector<Case> catalogue() {
              {"Param", bump_off, "param --mesh {D}/bump.off --out {D}/uv.obj --layout {D}/l.vtu"},
              {"Seamless", sphere_off, "seamless --mesh {D}/sphere.off --out {D}/s.obj"},
              {"Polycube", tets_mesh, "polycube --mesh {D}/t.mesh --out {D}/o.mesh"},
-             {"Deform", lifted_box, "deform --rest {D}/box.mesh --targets {D}/t.txt --out {D}/o.vtu"},
+             {"Deform", lifted_box,
+              "deform --rest {D}/box.mesh --targets {D}/t.txt --out {D}/o.vtu"},
              {"Demo", none, "demo --size 4 --out-dir {D}/demo"},
              {"Subdivide", bump_off, "subdivide --mesh {D}/bump.off --out {D}/s.obj"}}) {
         const bool quiet = name != "Subdivide";
@@ -1257,7 +1259,8 @@ class Interruption : public ::testing::Test {
         posix_spawnattr_setsigdefault(&attributes, &defaults);
         posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
         // An ignored signal stays ignored in the child.
-        struct sigaction ignore {}, previous {};
+        struct sigaction ignore {
+        }, previous{};
         ignore.sa_handler = SIG_IGN;
         if (sigpipe_ignored) sigaction(SIGPIPE, &ignore, &previous);
         pid_t pid = -1;
@@ -1349,18 +1352,18 @@ TEST_F(Interruption, WhileRecordingRemovesTheRecording) {
 // status"); with SIGPIPE ignored, the write error is exit 2 and one line. Nothing is left.
 TEST_F(Interruption, AClosedOutputPipeLeavesNothing) {
     std::ofstream(folder_ / "p.txt") << grid_problem(4, grid_boundary(4), {{5, {0.4, 0.5}}});
-    const fs::path errors = fs::temp_directory_path() /
-                            ("sa_closed_pipe_" + std::to_string(::getpid()) + ".err");
+    const fs::path errors =
+        fs::temp_directory_path() / ("sa_closed_pipe_" + std::to_string(::getpid()) + ".err");
     const auto before = snapshot(folder_);
     for (const bool ignored : {false, true}) {
         SCOPED_TRACE(ignored ? "SIGPIPE ignored" : "SIGPIPE by default");
         int ends[2];
         ASSERT_EQ(pipe(ends), 0);
         close(ends[0]);  // no reader
-        const pid_t pid = start({"map", "--rest", (folder_ / "p.txt").string(), "--out",
-                                 (folder_ / "o.vtu").string(), "--report",
-                                 (folder_ / "r.json").string(), "--quiet"},
-                                ends[1], errors.string(), ignored);
+        const pid_t pid = start(
+            {"map", "--rest", (folder_ / "p.txt").string(), "--out", (folder_ / "o.vtu").string(),
+             "--report", (folder_ / "r.json").string(), "--quiet"},
+            ends[1], errors.string(), ignored);
         close(ends[1]);
         ASSERT_GT(pid, 0);
         int status = 0;
@@ -1409,13 +1412,13 @@ TEST(MemoryLimit, EveryCommandThatSolvesEndsAtOnceWhenTheBlasBufferCannotBeHad) 
     if (kSanitized) GTEST_SKIP() << "the sanitizer runtime cannot run under ulimit -v";
     const fs::path folder = fs::temp_directory_path() / ("sa_blas_" + std::to_string(::getpid()));
     const std::string d = folder.string();
-    for (const std::string& arguments : std::vector<std::string>
-         {"map --rest " + d + "/p.txt --out " + d + "/o.vtu",
-          "param --mesh " + d + "/m.obj --out " + d + "/o.obj",
-          "seamless --mesh " + d + "/m.obj --out " + d + "/o.obj",
-          "polycube --mesh " + d + "/m.mesh --out " + d + "/o.mesh",
-          "deform --rest " + d + "/m.mesh --targets " + d + "/t.txt --out " + d + "/o.vtu",
-          "demo --out-dir " + d + "/demo"}) {
+    for (const std::string& arguments : std::vector<std::string>{
+             "map --rest " + d + "/p.txt --out " + d + "/o.vtu",
+             "param --mesh " + d + "/m.obj --out " + d + "/o.obj",
+             "seamless --mesh " + d + "/m.obj --out " + d + "/o.obj",
+             "polycube --mesh " + d + "/m.mesh --out " + d + "/o.mesh",
+             "deform --rest " + d + "/m.mesh --targets " + d + "/t.txt --out " + d + "/o.vtu",
+             "demo --out-dir " + d + "/demo"}) {
         SCOPED_TRACE(arguments);
         int status = 0;
         const std::string text =

@@ -13,7 +13,7 @@
 #include <optional>
 #include <string>
 
-#include "geometry/mesh_generators.h"
+#include "geometry/mesh/mesh_generators.h"
 #include "optim/errors.h"
 #include "render_test_util.h"
 

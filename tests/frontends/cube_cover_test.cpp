@@ -5,7 +5,7 @@
 #include <array>
 
 #include "frontends/polycube/polycube_planes.h"
-#include "geometry/mesh_generators.h"
+#include "geometry/mesh/mesh_generators.h"
 #include "tests/fixtures/polycube_fixtures.h"
 
 namespace sa {

@@ -8,7 +8,7 @@
 
 #include "frontends/cli/command_options.h"
 #include "geometry/io/mesh_file.h"
-#include "geometry/mesh_generators.h"
+#include "geometry/mesh/mesh_generators.h"
 #include "optim/errors.h"
 #include "tests/geometry/io/io_test_util.h"
 

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "geometry/map_quality.h"
-#include "geometry/rest_frames.h"
+#include "geometry/mesh/rest_frames.h"
+#include "geometry/quality/map_quality.h"
 #include "tests/fixtures/bar_deformation.h"
 
 namespace sa {

@@ -4,7 +4,7 @@
 
 #include <Eigen/Geometry>
 
-#include "geometry/mesh_generators.h"
+#include "geometry/mesh/mesh_generators.h"
 #include "optim/errors.h"
 #include "tests/fixtures/bar_deformation.h"
 

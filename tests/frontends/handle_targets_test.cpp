@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "geometry/io/mesh_file.h"
-#include "geometry/mesh_generators.h"
+#include "geometry/mesh/mesh_generators.h"
 #include "tests/geometry/io/io_test_util.h"
 
 namespace sa {
@@ -129,14 +129,12 @@ TEST(HandleTargets, PlanarRowsOfThreeNumbersTakeTheReadingThatFits) {
         {"far.txt:2: vertex index 99 outside [0, 9)"}));
     EXPECT_TRUE(throws_input_error(
         [&] {
-            read_handle_targets(handles, folder.write("z.txt", "0.5 1 0\n1 2 0.25\n3 1 0\n"), 9,
-                                2);
+            read_handle_targets(handles, folder.write("z.txt", "0.5 1 0\n1 2 0.25\n3 1 0\n"), 9, 2);
         },
         {"z.txt:2: z = 0.25"}));
     // A handle list whose first number could be a count is read as a handle, and said so.
-    const HandleTargets counted =
-        read_handle_targets(folder.write("c.txt", "2\n0\n1\n"),
-                            folder.write("c3.txt", "0.5 0\n1 1\n0 1\n"), 9, 2);
+    const HandleTargets counted = read_handle_targets(
+        folder.write("c.txt", "2\n0\n1\n"), folder.write("c3.txt", "0.5 0\n1 1\n0 1\n"), 9, 2);
     EXPECT_EQ(counted.handles, (std::vector<Index>{2, 0, 1}));
     EXPECT_NE(counted.reading.find("c.txt:1: 2 read as an index"), std::string::npos)
         << counted.reading;
@@ -147,8 +145,8 @@ TEST(HandleTargets, ATargetBeyondDoubleArithmeticIsNamed) {
     TempFolder folder;
     const SimplicialMesh grid = grid_triangles(2, 2);  // the unit square, 9 vertices
     HandleTargets far = read_handle_targets("", folder.write("t.txt", "0 0 0\n8 1 1e200\n"), 9, 2);
-    EXPECT_EQ(far.origins, (std::vector<std::string>{folder.path("t.txt") + ":1",
-                                                     folder.path("t.txt") + ":2"}));
+    EXPECT_EQ(far.origins,
+              (std::vector<std::string>{folder.path("t.txt") + ":1", folder.path("t.txt") + ":2"}));
     EXPECT_TRUE(throws_input_error([&] { check_target_reach(grid.vertices, far); },
                                    {"t.txt:2: the target of handle vertex 8 lies 1e+200"}));
     far.targets(1, 1) = 1e90;  // far, but representable

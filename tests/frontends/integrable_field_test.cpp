@@ -5,9 +5,9 @@
 #include <cmath>
 #include <random>
 
-#include "geometry/cut_graph.h"
-#include "geometry/frame_field.h"
-#include "geometry/mesh_generators.h"
+#include "frontends/seamless/cut_graph.h"
+#include "frontends/seamless/frame_field.h"
+#include "geometry/mesh/mesh_generators.h"
 
 namespace sa {
 namespace {

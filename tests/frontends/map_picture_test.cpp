@@ -18,8 +18,8 @@
 
 #include "frontends/output/layout_picture.h"
 #include "geometry/io/mesh_file.h"
-#include "geometry/mesh_generators.h"
-#include "geometry/mesh_topology.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/mesh/mesh_topology.h"
 #include "optim/errors.h"
 #include "render_test_util.h"
 #include "tests/geometry/io/io_test_util.h"

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "frontends/simplex_assembly/detail/prepared_problem.h"
-#include "geometry/mesh_generators.h"
+#include "geometry/mesh/mesh_generators.h"
 #include "optim/errors.h"
 
 namespace sa {

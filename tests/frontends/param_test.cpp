@@ -8,10 +8,10 @@
 #include <functional>
 
 #include "frontends/param/parameterization.h"
-#include "geometry/boundary_fans.h"
-#include "geometry/local_injectivity.h"
-#include "geometry/mesh_generators.h"
-#include "geometry/mesh_topology.h"
+#include "geometry/mesh/boundary_fans.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/mesh/mesh_topology.h"
+#include "geometry/quality/local_injectivity.h"
 #include "optim/errors.h"
 
 namespace sa {

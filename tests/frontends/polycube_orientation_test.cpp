@@ -4,7 +4,7 @@
 
 #include <Eigen/Geometry>
 
-#include "geometry/mesh_topology.h"
+#include "geometry/mesh/mesh_topology.h"
 #include "tests/fixtures/polycube_fixtures.h"
 
 namespace sa {

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "frontends/polycube/cube_cover.h"
-#include "geometry/map_quality.h"
-#include "geometry/mesh_generators.h"
-#include "geometry/rest_frames.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/mesh/rest_frames.h"
+#include "geometry/quality/map_quality.h"
 #include "optim/errors.h"
 #include "tests/fixtures/polycube_fixtures.h"
 
@@ -232,7 +232,8 @@ PluginStage<3> vertex_stage(const PreparedPolycube& prepared, const RestFrames<3
 // The assembly terms hold the map's scale (f-SA): at a PolyCube (the cube cover) E~ is 0, and
 // the same map shrunk to half its size, still planar, is no longer assembled, because each
 // boundary vertex is held on its plane at the start's offset. Planarity alone (on A) would give
-// the shrunk map E~ = 0 as well, and the assembly shrank cup's map (docs/measurements.md, PolyCube).
+// the shrunk map E~ = 0 as well, and the assembly shrank cup's map (docs/measurements.md,
+// PolyCube).
 TEST(PolycubeSolve, TheAssemblyHoldsThePlanesAtTheStartOffsets) {
     const PreparedPolycube prepared =
         prepared_shape(testing::bent(testing::voxel_tetrahedra(testing::l_shape(), 2), 0.15));

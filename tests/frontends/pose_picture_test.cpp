@@ -8,7 +8,7 @@
 
 #include <filesystem>
 
-#include "geometry/mesh_generators.h"
+#include "geometry/mesh/mesh_generators.h"
 #include "optim/errors.h"
 #include "render_test_util.h"
 #include "tests/geometry/io/io_test_util.h"

@@ -4,7 +4,7 @@
 
 #include <complex>
 
-#include "geometry/mesh_generators.h"
+#include "geometry/mesh/mesh_generators.h"
 
 namespace sa {
 namespace {

@@ -8,9 +8,9 @@
 #include <random>
 
 #include "geometry/io/mesh_file.h"
-#include "geometry/map_quality.h"
-#include "geometry/mesh_generators.h"
-#include "geometry/mesh_topology.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/mesh/mesh_topology.h"
+#include "geometry/quality/map_quality.h"
 
 namespace sa {
 namespace {

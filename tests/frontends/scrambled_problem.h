@@ -5,7 +5,7 @@
 #include <random>
 
 #include "frontends/simplex_assembly/map_solve.h"
-#include "geometry/mesh_topology.h"
+#include "geometry/mesh/mesh_topology.h"
 #include "tests/fixtures/generated_problems.h"
 
 namespace sa {

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <random>
 
-#include "geometry/frame_field.h"
-#include "geometry/mesh_generators.h"
+#include "frontends/seamless/frame_field.h"
+#include "geometry/mesh/mesh_generators.h"
 #include "optim/errors.h"
 
 namespace sa {

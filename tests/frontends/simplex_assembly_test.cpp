@@ -4,9 +4,9 @@
 #include <random>
 
 #include "frontends/simplex_assembly/map_solve.h"
-#include "geometry/handle_feasibility.h"
-#include "geometry/mesh_generators.h"
-#include "geometry/mesh_topology.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/mesh/mesh_topology.h"
+#include "geometry/quality/handle_feasibility.h"
 #include "tests/frontends/scrambled_problem.h"
 
 namespace sa {

@@ -5,8 +5,8 @@
 #include <cstring>
 
 #include "frontends/simplex_assembly/map_solve.h"
-#include "geometry/mesh_generators.h"
-#include "geometry/mesh_topology.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/mesh/mesh_topology.h"
 #include "scrambled_problem.h"
 #include "tests/fixtures/generated_problems.h"
 

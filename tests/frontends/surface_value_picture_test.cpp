@@ -10,7 +10,7 @@
 #include <filesystem>
 
 #include "frontends/output/colour_map.h"
-#include "geometry/mesh_generators.h"
+#include "geometry/mesh/mesh_generators.h"
 #include "optim/errors.h"
 #include "render_test_util.h"
 

@@ -5,8 +5,8 @@
 #include <filesystem>
 
 #include "frontends/simplex_assembly/map_solve.h"
-#include "geometry/handle_feasibility.h"
 #include "geometry/io/problem_io.h"
+#include "geometry/quality/handle_feasibility.h"
 
 namespace sa {
 namespace {

@@ -3,8 +3,8 @@
 #include <random>
 
 #include "frontends/simplex_assembly/map_solve.h"
-#include "geometry/mesh_generators.h"
-#include "geometry/mesh_topology.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/mesh/mesh_topology.h"
 #include "optim/errors.h"
 
 namespace sa {

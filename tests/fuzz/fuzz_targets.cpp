@@ -28,7 +28,7 @@
 #include "geometry/io/rawfield_io.h"
 #include "geometry/io/tetgen_io.h"
 #include "geometry/io/vtk_io.h"
-#include "geometry/mesh_generators.h"
+#include "geometry/mesh/mesh_generators.h"
 #include "optim/errors.h"
 
 namespace sa::fuzz {

@@ -1,12 +1,12 @@
-#include "geometry/arap_deformation.h"
+#include "geometry/maps/arap_deformation.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "geometry/map_quality.h"
-#include "geometry/mesh_generators.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/quality/map_quality.h"
 #include "optim/errors.h"
 
 namespace sa {

@@ -6,7 +6,7 @@
 #include <Eigen/QR>
 #include <cmath>
 
-#include "geometry/rest_frames.h"
+#include "geometry/mesh/rest_frames.h"
 #include "optim/errors.h"
 
 namespace sa {

@@ -1,14 +1,14 @@
-#include "geometry/branch_points.h"
+#include "geometry/quality/branch_points.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <complex>
 
-#include "geometry/map_quality.h"
-#include "geometry/mesh_generators.h"
-#include "geometry/rest_frames.h"
-#include "geometry/submesh.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/mesh/rest_frames.h"
+#include "geometry/mesh/submesh.h"
+#include "geometry/quality/map_quality.h"
 
 namespace sa {
 namespace {

@@ -4,10 +4,10 @@
 
 #include <gtest/gtest.h>
 
-#include "geometry/map_quality.h"
-#include "geometry/mesh_generators.h"
-#include "geometry/mesh_topology.h"
-#include "geometry/rest_frames.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/mesh/mesh_topology.h"
+#include "geometry/mesh/rest_frames.h"
+#include "geometry/quality/map_quality.h"
 #include "optim/errors.h"
 
 namespace sa {

@@ -1,4 +1,4 @@
-#include "geometry/handle_feasibility.h"
+#include "geometry/quality/handle_feasibility.h"
 
 #include <gtest/gtest.h>
 
@@ -7,8 +7,8 @@
 #include <cmath>
 #include <functional>
 
-#include "geometry/mesh_generators.h"
-#include "geometry/mesh_topology.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/mesh/mesh_topology.h"
 
 namespace sa {
 namespace {

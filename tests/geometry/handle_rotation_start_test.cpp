@@ -1,13 +1,13 @@
-#include "geometry/handle_rotation_start.h"
+#include "geometry/maps/handle_rotation_start.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "geometry/arap_deformation.h"
-#include "geometry/map_quality.h"
-#include "geometry/mesh_generators.h"
+#include "geometry/maps/arap_deformation.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/quality/map_quality.h"
 #include "tests/fixtures/bar_deformation.h"
 
 namespace sa {

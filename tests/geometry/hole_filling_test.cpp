@@ -1,15 +1,15 @@
-#include "geometry/hole_filling.h"
+#include "geometry/mesh/hole_filling.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
-#include "geometry/boundary_loops.h"
-#include "geometry/initial_maps.h"
-#include "geometry/map_quality.h"
-#include "geometry/mesh_generators.h"
-#include "geometry/rest_frames.h"
+#include "geometry/maps/initial_maps.h"
+#include "geometry/mesh/boundary_loops.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/mesh/rest_frames.h"
+#include "geometry/quality/map_quality.h"
 #include "optim/errors.h"
 
 namespace sa {

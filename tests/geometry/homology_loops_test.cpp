@@ -1,6 +1,6 @@
-// Loops generating a surface's first homology (geometry/homology_loops.h): none on a disk or a
+// Loops generating a surface's first homology (geometry/mesh/homology_loops.h): none on a disk or a
 // sphere, one around an annulus' hole, two independent ones on a torus and on a ring's boundary.
-#include "geometry/homology_loops.h"
+#include "geometry/mesh/homology_loops.h"
 
 #include <gtest/gtest.h>
 
@@ -8,9 +8,9 @@
 #include <functional>
 #include <set>
 
-#include "geometry/mesh_generators.h"
-#include "geometry/mesh_topology.h"
-#include "geometry/tet_boundary.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/mesh/mesh_topology.h"
+#include "geometry/mesh/tet_boundary.h"
 #include "tests/fixtures/voxel_meshes.h"
 
 namespace sa {

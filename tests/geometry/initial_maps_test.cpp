@@ -3,11 +3,11 @@
 #include <Eigen/SVD>
 #include <cmath>
 
-#include "geometry/boundary_fans.h"
-#include "geometry/boundary_loops.h"
-#include "geometry/initial_maps.h"
-#include "geometry/map_quality.h"
-#include "geometry/mesh_generators.h"
+#include "geometry/maps/initial_maps.h"
+#include "geometry/mesh/boundary_fans.h"
+#include "geometry/mesh/boundary_loops.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/quality/map_quality.h"
 #include "optim/errors.h"
 
 namespace sa {

@@ -1,11 +1,11 @@
-#include "geometry/local_injectivity.h"
+#include "geometry/quality/local_injectivity.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "geometry/map_quality.h"
-#include "geometry/rest_frames.h"
+#include "geometry/mesh/rest_frames.h"
+#include "geometry/quality/map_quality.h"
 
 namespace sa {
 namespace {

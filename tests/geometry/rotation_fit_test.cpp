@@ -1,4 +1,4 @@
-#include "geometry/rotation_fit.h"
+#include "geometry/maps/rotation_fit.h"
 
 #include <gtest/gtest.h>
 
@@ -10,9 +10,10 @@
 namespace sa {
 namespace {
 
-/// The SVD's closest rotation (as geometry/disassembly.h's) and how well determined it is: the
-/// sum of the two smallest singular values, the smaller one signed by det M (the closest
-/// rotation is unique when it is > 0, and moves by about round-off / gap under round-off).
+/// The SVD's closest rotation (as frontends/simplex_assembly/disassembly.h's) and how well
+/// determined it is: the sum of the two smallest singular values, the smaller one signed by det M
+/// (the closest rotation is unique when it is > 0, and moves by about round-off / gap under
+/// round-off).
 template <int D>
 struct SvdFit {
     Mat<D> rotation;

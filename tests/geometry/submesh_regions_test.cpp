@@ -2,9 +2,9 @@
 
 #include <functional>
 
-#include "geometry/mesh_generators.h"
-#include "geometry/mesh_topology.h"
-#include "geometry/submesh.h"
+#include "geometry/mesh/mesh_generators.h"
+#include "geometry/mesh/mesh_topology.h"
+#include "geometry/mesh/submesh.h"
 
 namespace sa {
 namespace {

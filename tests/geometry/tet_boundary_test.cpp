@@ -1,10 +1,10 @@
-// The boundary of a tetrahedral mesh (geometry/tet_boundary.h): the loops a solid's handles
+// The boundary of a tetrahedral mesh (geometry/mesh/tet_boundary.h): the loops a solid's handles
 // make, counted from its boundary surface.
-#include "geometry/tet_boundary.h"
+#include "geometry/mesh/tet_boundary.h"
 
 #include <gtest/gtest.h>
 
-#include "geometry/mesh_topology.h"
+#include "geometry/mesh/mesh_topology.h"
 #include "optim/errors.h"
 #include "tests/fixtures/voxel_meshes.h"
 

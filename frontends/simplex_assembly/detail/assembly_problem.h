@@ -29,10 +29,10 @@
 #include "frontends/simplex_assembly/engine.h"
 #include "frontends/simplex_assembly/map_options.h"
 #include "frontends/simplex_assembly/simplex_term.h"
-#include "geometry/boundary_fans.h"
-#include "geometry/mesh_topology.h"
-#include "geometry/rest_frames.h"
-#include "geometry/steiner_tree.h"
+#include "frontends/simplex_assembly/steiner_tree.h"
+#include "geometry/mesh/boundary_fans.h"
+#include "geometry/mesh/mesh_topology.h"
+#include "geometry/mesh/rest_frames.h"
 
 namespace sa {
 

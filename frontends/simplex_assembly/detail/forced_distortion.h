@@ -11,8 +11,8 @@
 // ../shared/data/tlc/armadillo-598 has 1,904 simplices whose four vertices are handles, 192 of
 // them beyond ln(1e16) (up to d = 2.6e6), and its full solve stalled at lambda = 1e16 with
 // E~_assembly 0.035-0.055 in every variant; tlc/stgc-3d has one, and its full solve "converges
-// at lambda_max" with E~_assembly 2.2e-5 (docs/measurements.md). The auto mode sends such problems to
-// the submesh mode, whose start untangles in vertex variables (untangle.h), where these
+// at lambda_max" with E~_assembly 2.2e-5 (docs/measurements.md). The auto mode sends such problems
+// to the submesh mode, whose start untangles in vertex variables (untangle.h), where these
 // simplices are constants.
 
 #include <vector>

@@ -9,9 +9,9 @@
 #include "energies/simplex_energy.h"
 #include "frontends/simplex_assembly/detail/assembly_problem.h"
 #include "frontends/simplex_assembly/map_solve.h"
-#include "geometry/mesh_topology.h"
-#include "geometry/rest_frames.h"
-#include "geometry/vertex_recovery.h"
+#include "geometry/maps/vertex_recovery.h"
+#include "geometry/mesh/mesh_topology.h"
+#include "geometry/mesh/rest_frames.h"
 
 namespace sa {
 

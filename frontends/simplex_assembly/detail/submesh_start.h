@@ -8,7 +8,8 @@
 // Otherwise:
 //   1. the paper's M^0: each A_i projected as in the disassembly (Initialization), vertices by
 //      Eq. 6 with the handles fixed;
-//   2. from M^0, local/global iterations on Eq. 6's least squares Q (geometry/arap_local_step.h):
+//   2. from M^0, local/global iterations on Eq. 6's least squares Q
+//   (geometry/maps/arap_local_step.h):
 //      ARAP (rotations), or ASAP (similarities) when the disassembly projects to similarities.
 //      They spread large handle motions through the mesh, which the initial map leaves to the
 //      simplices next to the handles. Plain iteration creeps (rabbit of ../shared/data/deform,

@@ -4,8 +4,8 @@
 // minimize mu E_m + E_C over assembled configurations: the same problem as minimizing it over
 // the vertex positions with the handles fixed. In vertex variables it has no penalty term, so
 // Newton keeps its quadratic convergence instead of fighting a condition number of 1e16
-// (measured in docs/measurements.md). Starting from the recovered, inversion-free mesh, the barrier and
-// the largest feasible step keep every iterate inversion-free and within the bound.
+// (measured in docs/measurements.md). Starting from the recovered, inversion-free mesh, the barrier
+// and the largest feasible step keep every iterate inversion-free and within the bound.
 //
 // It is the engine (engine.h) in its vertex layout: the per-simplex energies through the
 // adapter that evaluates them at A = X E^-1, E_theta in its vertex form, and the problem's own
@@ -43,8 +43,8 @@
 #include "frontends/simplex_assembly/map_options.h"
 #include "frontends/simplex_assembly/simplex_term.h"
 #include "frontends/simplex_assembly/stage_trace.h"
-#include "geometry/boundary_fans.h"
-#include "geometry/rest_frames.h"
+#include "geometry/mesh/boundary_fans.h"
+#include "geometry/mesh/rest_frames.h"
 #include "optim/logger.h"
 #include "optim/newton_summary.h"
 

@@ -1,0 +1,31 @@
+#pragma once
+// Where a map with no inverted simplex still folds: it wraps more than once around an interior
+// vertex (triangles) or an interior edge (tetrahedra), a branch point.
+//
+// Positive orientation of every simplex does not make a map locally injective. Around an
+// interior vertex of a triangle mesh the image angles of its triangles sum to 2 pi k for a whole
+// k; k = 2 is a branch point (the vertex's star covers its image twice, every triangle positive).
+// A region whose fixed outer vertices make the boundary turn twice (turning number 2) can only be
+// filled that way or with an inverted triangle. Around an interior edge of a tetrahedral mesh the
+// dihedral angles of its tetrahedra sum to 2 pi k, and with every tetrahedron positive the map is
+// locally injective exactly when every such k is 1 (the link of a vertex, a sphere, then covers
+// its image once). The checks assume no inverted or degenerate simplex (those are counted apart).
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "geometry/mesh/mesh_topology.h"
+
+namespace sa {
+
+/// Interior vertices of a triangle mesh mapped to the plane (`positions`, #V x 2) whose image
+/// angles do not sum to 2 pi (sorted).
+std::vector<Index> branched_vertices(const SimplicialMesh& mesh, const MeshTopology& topology,
+                                     const Eigen::MatrixXd& positions);
+
+/// Interior edges of a tetrahedral mesh mapped to space (`positions`, #V x 3), as indices into
+/// topology.edges, whose tetrahedra's image dihedral angles do not sum to 2 pi (sorted).
+std::vector<Index> branched_edges(const SimplicialMesh& mesh, const MeshTopology& topology,
+                                  const Eigen::MatrixXd& positions);
+
+}  // namespace sa
