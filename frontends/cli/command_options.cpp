@@ -198,7 +198,8 @@ CLI::App* add_map_command(CLI::App& app, MapArguments& a) {
                     "folder for a ParaView time series of the assembly (assembly.pvd)");
     map->add_option("--mode", a.mode,
                     "auto (submeshes for large meshes with few bad simplices or a fixed boundary), "
-                    "full or submesh")
+                    "full, submesh, or descent (from a start without foldovers: Newton on the "
+                    "vertex positions alone)")
         ->capture_default_str();
     map->add_option("--rings", a.rings, "submesh mode: rings around the bad simplices (m)")
         ->check(integer_at_least(1))
@@ -296,7 +297,8 @@ CLI::App* add_param_command(CLI::App& app, ParamArguments& a) {
     param->add_flag("--no-fallback", a.no_fallback,
                     "keep the requested start's result even when it does not verify (no restart "
                     "from a Tutte map)");
-    param->add_option("--mode", a.mode, "auto, full or submesh")->capture_default_str();
+    param->add_option("--mode", a.mode, "auto, full, submesh or descent (as sa map's)")
+        ->capture_default_str();
     add_threads_option(*param, a.threads);
     add_max_iterations_option(*param, a.max_iterations, "Newton iterations at most, per stage");
     add_max_time_option(

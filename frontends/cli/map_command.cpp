@@ -213,9 +213,13 @@ int run_map_command(const MapArguments& a) {
     std::ostringstream summary;
     summary << "  initial map: " << format_quality(result.initial_quality) << "\n"
             << "  result:      " << format_quality(result.final_quality) << "\n"
-            << "  " << to_string(options.variant) << ", " << result.num_variables << " variables, "
-            << result.newton.num_steps() + result.vertex_stage.num_steps() << " iterations, time "
-            << times << "\n"
+            << "  "
+            << (result.mode == SolveMode::kDescent
+                    ? std::string("descent")
+                    : to_string(options.variant) + ", " + std::to_string(result.num_variables) +
+                          " variables")
+            << ", " << result.newton.num_steps() + result.vertex_stage.num_steps()
+            << " iterations, time " << times << "\n"
             << "  " << result.message << "\n"
             << "  wrote " << a.out << picture.wrote() << (a.report.empty() ? "" : ", " + a.report)
             << (series.empty() ? "" : ", " + series) << "\n";

@@ -157,6 +157,7 @@ int run_param_command(const ParamArguments& a) {
         problem.initial = r.initial_uv;
         problem.source = a.mesh;
         nlohmann::json report = map_report(problem, solver, r.solve);
+        report["message"] = r.message;  // the command's, not its last solve's
         nlohmann::json rounds = nlohmann::json::array();
         for (const BoundRound& b : r.rounds) {
             rounds.push_back({{"bound", std::isfinite(b.bound) ? nlohmann::json(b.bound)
@@ -180,19 +181,8 @@ int run_param_command(const ParamArguments& a) {
                                   {"details", t.describe()}});
             }
             nlohmann::json descent = nlohmann::json::array();
-            for (const DescentRound& d : r.fallback.rounds) {
-                descent.push_back({{"s", d.s},
-                                   {"bound", std::isfinite(d.bound) ? nlohmann::json(d.bound)
-                                                                    : nlohmann::json(nullptr)},
-                                   {"max_distortion_before", d.max_distortion_before},
-                                   {"max_distortion_after", d.max_distortion_after},
-                                   {"iterations", d.iterations},
-                                   {"outcome", to_string(d.outcome)},
-                                   {"termination", newton_ran(d.outcome)
-                                                       ? nlohmann::json(to_string(d.termination))
-                                                       : nlohmann::json(nullptr)},
-                                   {"undone_degenerate", d.undone_degenerate}});
-            }
+            for (const ContinuationRound& d : r.fallback.rounds)
+                descent.push_back(continuation_round_json(d));
             fallback["reason"] = r.fallback.describe_reason();
             fallback["reason_kind"] = to_string(r.fallback.reason);
             fallback["starts"] = starts;

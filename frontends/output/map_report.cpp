@@ -123,6 +123,18 @@ nlohmann::json assembly_iterations_json(const SimplexAssemblyResult& r) {
     return iterations;
 }
 
+nlohmann::json continuation_round_json(const ContinuationRound& round) {
+    return {{"s", round.s},
+            {"bound", number(round.bound)},
+            {"max_distortion_before", round.max_distortion_before},
+            {"max_distortion_after", round.max_distortion_after},
+            {"iterations", round.iterations},
+            {"outcome", to_string(round.outcome)},
+            {"termination", newton_ran(round.outcome) ? nlohmann::json(to_string(round.termination))
+                                                      : nlohmann::json(nullptr)},
+            {"undone_degenerate", round.undone_degenerate}};
+}
+
 nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOptions& o,
                           const SimplexAssemblyResult& r) {
     nlohmann::json report;
@@ -157,6 +169,7 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
         {"threads", r.newton.num_threads}};
     const Verification& v = r.verification;
     report["verification"] = {{"success", r.success},
+                              {"valid", r.valid},
                               {"description", v.describe()},
                               {"simplices", v.simplices},
                               {"inverted", v.inverted},
@@ -174,6 +187,11 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
         report["submesh"] = m;
         report["submesh"]["times"] = {
             {"start", m.start_time}, {"regions", m.region_time}, {"solves", m.solve_time}};
+    }
+    if (r.mode == SolveMode::kDescent) {
+        report["descent_rounds"] = nlohmann::json::array();
+        for (const ContinuationRound& round : r.descent_rounds)
+            report["descent_rounds"].push_back(continuation_round_json(round));
     }
     report["initial_quality"] = quality_json(r.initial_quality);
     report["final_quality"] = quality_json(r.final_quality);

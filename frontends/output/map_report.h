@@ -19,6 +19,11 @@ nlohmann::json quality_json(const MapQuality& quality);
 /// figures}], the enums by their names (stage_trace.h); termination and figures when present.
 nlohmann::json stages_json(const StageTrace& stages);
 
+/// One round of the vertex stage's continuation: {s, bound, max_distortion_before,
+/// max_distortion_after, iterations, outcome, termination, undone_degenerate}; an infinite bound
+/// and a termination when Newton did not run are null.
+nlohmann::json continuation_round_json(const ContinuationRound& round);
+
 /// One row per assembly iteration of `result`: energy, E~_assembly, lambda, time, and from the
 /// first step on Newton's step length, line-search trials, gradient norm, decrement, the
 /// regularization tau its factorization needed, and the iteration's and factorization's seconds.

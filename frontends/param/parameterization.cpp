@@ -140,21 +140,24 @@ ParameterizationResult parameterize(const SimplicialMesh& mesh, const std::strin
             MappingProblem lowered = problem;
             lowered.initial = result.uv;
             lowered.reference = f.initial_uv;
-            SimplexAssemblyOptions o = with_time_left(options.solver, budget);
+            SimplexAssemblyOptions o = descent_options(with_time_left(options.solver, budget));
             o.bound = 1.0 + 1e-9;
-            const VertexDescentResult d = run_vertex_descent(lowered, o, observer);
+            SimplexAssemblyResult d = run_simplex_assembly(lowered, o, observer);
             BoundRound record;
-            record.bound = d.rounds.empty() ? kInfinity : d.rounds.back().bound;
-            record.max_distortion = d.solve.verification.max_distortion;
-            record.success = d.solve.success;
-            for (const DescentRound& r : d.rounds) record.iterations += r.iterations;
+            record.bound = d.descent_rounds.empty() ? kInfinity : d.descent_rounds.back().bound;
+            record.max_distortion = d.verification.max_distortion;
+            record.success = d.valid;
+            for (const ContinuationRound& r : d.descent_rounds) record.iterations += r.iterations;
             record.time = round_watch.seconds();
             result.rounds.push_back(record);
-            if (MapRank::of_verdict(d.solve.success, record.max_distortion)
+            if (MapRank::of_verdict(d.valid, record.max_distortion)
                     .better_than(MapRank::of_verdict(true, result.reached_bound))) {
-                result.uv = d.solve.positions;
-                result.solve = d.solve;
+                result.uv = d.positions;
+                result.solve = std::move(d);
+                // Measured against the bound asked for, not the rounds' target.
                 result.solve.verification.bound = options.solver.bound;
+                result.solve.success =
+                    result.solve.valid && result.solve.verification.within_bound();
                 result.reached_bound = record.max_distortion;
             }
         }

@@ -82,6 +82,12 @@ std::string StartFallback::describe_reason() const {
                       std::to_string(requested.degenerate) + " degenerate)");
 }
 
+SimplexAssemblyOptions descent_options(SimplexAssemblyOptions solver) {
+    solver.mode = SolveMode::kDescent;
+    solver.untangle_fallback = false;
+    return solver;
+}
+
 StartFallback fall_back_to_tutte(const MappingProblem& problem, const StartDisk& disk,
                                  const SimplexAssemblyOptions& solver,
                                  const SimplexAssemblyObserver& observer,
@@ -101,48 +107,50 @@ StartFallback fall_back_to_tutte(const MappingProblem& problem, const StartDisk&
         MappingProblem start = problem;
         start.initial = disk.to_surface(tutte_embedding(disk.mesh, disk.topology, weights));
         log_line(observer.logger, "fallback: start from " + start_name(weights));
-        std::optional<VertexDescentResult> repaired;
+        std::optional<SimplexAssemblyResult> repaired;
         const MapQuality quality = start_quality(problem.mesh, start.initial);
         if (quality.degenerate > 0 && quality.inverted == 0) {
             // Positively oriented but numerically degenerate (a nearly closed surface shrunk
             // toward one point): repaired by the isometric barrier, which, unlike the conformal
             // one, grows shrunken triangles back; E_m is left out (its reference is the shrunken
             // map itself).
-            SimplexAssemblyOptions repair = with_time_left(solver, budget);
+            SimplexAssemblyOptions repair = descent_options(with_time_left(solver, budget));
             repair.distortion = DistortionType::kIsometric;
             repair.bound = kInfinity;
             repair.mapping_distortion.reset();
             MappingProblem shrunken = start;
             shrunken.reference.resize(0, 0);
-            const VertexDescentResult r = run_vertex_descent(shrunken, repair, observer);
+            SimplexAssemblyResult r = run_simplex_assembly(shrunken, repair, observer);
             tried.repair_degenerate = quality.degenerate;
-            tried.repaired = r.solve.success;
-            tried.repair_rounds = static_cast<int>(r.rounds.size());
-            tried.repair = r.solve.verification;
-            if (r.solve.success) {
-                start.initial = r.solve.positions;
-                repaired = r;
+            tried.repaired = r.valid;
+            tried.repair_rounds = static_cast<int>(r.descent_rounds.size());
+            tried.repair = r.verification;
+            if (r.valid) {
+                start.initial = r.positions;
+                repaired = std::move(r);
             }
         }
         start.reference = start.initial;
-        VertexDescentResult r = run_vertex_descent(start, with_time_left(solver, budget), observer);
-        tried.start_inverted = r.solve.initial_quality.inverted;
-        tried.start_degenerate = r.solve.initial_quality.degenerate;
-        tried.descent_verification = r.solve.verification;
-        tried.outcome = !r.start_valid    ? TriedStartOutcome::kRejected
-                        : r.solve.success ? TriedStartOutcome::kVerified
-                                          : TriedStartOutcome::kNotVerified;
-        if (!r.solve.success && repaired && r.start_valid) {
+        SimplexAssemblyResult r =
+            run_simplex_assembly(start, descent_options(with_time_left(solver, budget)), observer);
+        const bool start_valid = descent_started(r);
+        tried.start_inverted = r.initial_quality.inverted;
+        tried.start_degenerate = r.initial_quality.degenerate;
+        tried.descent_verification = r.verification;
+        tried.outcome = !start_valid ? TriedStartOutcome::kRejected
+                        : r.valid    ? TriedStartOutcome::kVerified
+                                     : TriedStartOutcome::kNotVerified;
+        if (!r.valid && repaired && start_valid) {
             // The solver's energy shrank the repaired map back to degenerate triangles (its
             // minimizers are not representable: a conformal map of a deep tube shrinks
             // exponentially): the repaired map itself is the valid result.
             tried.outcome = TriedStartOutcome::kRepairKept;
             r = std::move(*repaired);
         }
-        tried.descent = r.solve.message;
-        tried.valid = r.start_valid;
-        tried.verified = r.solve.success;
-        tried.max_distortion = r.solve.verification.max_distortion;
+        tried.descent = r.message;
+        tried.valid = start_valid;
+        tried.verified = r.valid;
+        tried.max_distortion = r.verification.max_distortion;
         log_line(observer.logger, "fallback: " + start_name(weights) + ": " + tried.describe());
         const bool better =
             MapRank::of_verdict(tried.verified, tried.max_distortion)
@@ -152,8 +160,8 @@ StartFallback fall_back_to_tutte(const MappingProblem& problem, const StartDisk&
         if (better) {
             fallback.start = weights;
             fallback.initial_uv = start.initial;
-            fallback.rounds = std::move(r.rounds);
-            fallback.solve = std::move(r.solve);
+            fallback.rounds = r.descent_rounds;
+            fallback.solve = std::move(r);
         }
         if (fallback.verified() && fallback.solve.verification.within_bound()) break;
         if (budget.exhausted()) break;

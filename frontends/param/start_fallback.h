@@ -10,16 +10,17 @@
 //    positions with the isometric barrier alone, which grows shrunken triangles back (the
 //    conformal barrier is scale-invariant and would leave them); a start it cannot repair goes
 //    on as it is.
-// An accepted start goes to Newton on the vertex positions (vertex_descent.h) with the solver's
-// options, whose barrier keeps every iterate valid; E_m's reference is that start (E_m =
-// difference measures the change from the initial map, and the initial map is now it).
+// An accepted start goes to Newton on the vertex positions (the driver's descent mode,
+// SolveMode::kDescent) with the solver's options, whose barrier keeps every iterate valid; E_m's
+// reference is that start (E_m = difference measures the change from the initial map, and the
+// initial map is now it).
 
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "frontends/param/start_disk.h"
-#include "frontends/simplex_assembly/vertex_descent.h"
+#include "frontends/simplex_assembly/map_solve.h"
 #include "geometry/maps/initial_maps.h"
 #include "geometry/mesh/mesh_topology.h"
 
@@ -71,13 +72,18 @@ struct StartFallback {
     std::vector<TriedStart> starts;
     std::optional<TutteWeights> start;  ///< the start whose result is `solve`, if one verified
     Eigen::MatrixXd initial_uv;         ///< that start, #V x 2
-    std::vector<DescentRound> rounds;
+    std::vector<ContinuationRound>
+        rounds;                   ///< the descent's (SimplexAssemblyResult::descent_rounds)
     SimplexAssemblyResult solve;  ///< its result (verified: no inverted or degenerate triangle)
     double time = 0.0;
     bool verified() const { return start.has_value(); }
     /// Why it ran, in a sentence with the figures.
     std::string describe_reason() const;
 };
+
+/// `solver` for a descent from a valid start (SolveMode::kDescent), without the driver's
+/// untangling fallback: the start is the only candidate.
+SimplexAssemblyOptions descent_options(SimplexAssemblyOptions solver);
 
 /// Runs the fallback on `problem.mesh` with the solver's options; `problem` supplies the boundary
 /// barrier flag and the source name. The Tutte starts are computed on `disk` (start_disk.h).

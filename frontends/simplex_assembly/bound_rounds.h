@@ -3,8 +3,8 @@
 // solved again with each bound K just above its largest distortion d, then again from that
 // result, while the rounds lower d. The one bound loop: the mesh driver's optimal bound
 // (optimal_bound.h: full or submesh solves, every bound of the problem lowered together) and the
-// vertex descent from a valid start over its bound (vertex_descent.h) both run it, each with its
-// own round and its BoundRule.
+// vertex descent from a valid start over its bound (detail/vertex_descent.h) both run it, each with
+// its own round and its BoundRule.
 //
 // Each bound k of a problem has
 //   d_k   its largest distortion on the last verified result,

@@ -11,8 +11,10 @@ namespace sa {
 
 constexpr EnumName<Variant> kVariantNames[] = {
     {Variant::kReduced, "r-SA"}, {Variant::kFull, "f-SA"}, {Variant::kVertex, "v-SA"}};
-constexpr EnumName<SolveMode> kSolveModeNames[] = {
-    {SolveMode::kAuto, "auto"}, {SolveMode::kFull, "full"}, {SolveMode::kSubmesh, "submesh"}};
+constexpr EnumName<SolveMode> kSolveModeNames[] = {{SolveMode::kAuto, "auto"},
+                                                   {SolveMode::kFull, "full"},
+                                                   {SolveMode::kSubmesh, "submesh"},
+                                                   {SolveMode::kDescent, "descent"}};
 
 std::string to_string(Variant variant) {
     return enum_name(kVariantNames, variant);

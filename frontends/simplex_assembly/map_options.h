@@ -15,10 +15,14 @@
 
 namespace sa {
 
-/// Whole mesh at once, or submeshes around the bad simplices (section 4.4, "Speedup").
-enum class SolveMode { kAuto, kFull, kSubmesh };
+/// How the driver solves (map_solve.h):
+///   kFull     the whole mesh at once: disassembly, assembly, recovery, the vertex stage;
+///   kSubmesh  submeshes around the bad simplices (section 4.4, "Speedup");
+///   kDescent  from a start without inverted simplices, the vertex stage alone, its bound
+///             continued in rounds (detail/vertex_descent.h); never chosen by kAuto.
+enum class SolveMode { kAuto, kFull, kSubmesh, kDescent };
 std::string to_string(SolveMode mode);
-/// "auto", "full" or "submesh"; throws InvalidArgumentError otherwise.
+/// "auto", "full", "submesh" or "descent"; throws InvalidArgumentError otherwise.
 SolveMode parse_solve_mode(const std::string& name);
 
 /// Which variables carry the translations (section 5.1, "Variants of simplex assembly").

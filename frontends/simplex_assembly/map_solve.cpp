@@ -9,6 +9,7 @@
 #include "frontends/simplex_assembly/detail/round_verification.h"
 #include "frontends/simplex_assembly/detail/submesh_assembly.h"
 #include "frontends/simplex_assembly/detail/untangle_fallback.h"
+#include "frontends/simplex_assembly/detail/vertex_descent.h"
 #include "frontends/simplex_assembly/detail/vertex_stage.h"
 #include "frontends/simplex_assembly/translation_gluing.h"
 #include "optim/errors.h"
@@ -235,18 +236,7 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
     if (options.vertex_stage && !options.until_valid && budget.exhausted()) {
         result.stages.add(Stage::kVertexStage, VertexStageOutcome::kSkippedTimeLimit);
     } else if (options.vertex_stage && !options.until_valid) {
-        // The anchored simplices keep all their vertices: a free part has no rigid motion left.
-        // A plugin that fixes the rigid motion itself (PolyCube's planes) frees them.
-        bool plugins_fix_motion = false;
-        for (const auto& plugin : in.plugins) plugins_fix_motion |= plugin->removes_rigid_motion();
-        std::vector<unsigned char> fixed = prepared.recovery_fixed;
-        for (Index s : in.anchored_simplices) {
-            for (int k = 0; k <= D; ++k) fixed[mesh.simplices(s, k)] = 1;
-        }
-        if (plugins_fix_motion) {
-            fixed.assign(fixed.size(), 0);
-            for (Index h : in.handles) fixed[h] = 1;
-        }
+        const std::vector<unsigned char> fixed = vertex_stage_fixed(prepared);
         VertexStage vertex = run_vertex_stage<D>(
             mesh, frames, in.energies, recovered, fixed, with_time_left(options, budget),
             observer.logger,
@@ -314,6 +304,10 @@ SimplexAssemblyResult solve_prepared(PreparedProblem<D>& p, const SimplexAssembl
     const SimplexAssemblyOptions solve_options = at_map_scale(options, prepared->pinned);
     if (result.mode == SolveMode::kSubmesh) {
         solve_submeshes<D>(*prepared, solve_options, budget, observer, result);
+    } else if (result.mode == SolveMode::kDescent) {
+        // At the caller's clamp: the descent's start is the caller's map, not the pinned one
+        // whose scale at_map_scale() measures.
+        solve_descent<D>(*prepared, options, budget, observer, result);
     } else if (prepared->assembly.start_linear.empty() && prepared->mesh.num_simplices() > 0) {
         throw InvalidArgumentError(input.source +
                                    ": a restarted problem (restart_problem) has no disassembly: "
@@ -331,6 +325,8 @@ SimplexAssemblyResult solve_prepared(PreparedProblem<D>& p, const SimplexAssembl
     } else {
         verify_result<D>(input, options, result, &prepared->topology);
     }
+    // A descent that could not start returns its start, whatever the verification says of it.
+    if (result.mode == SolveMode::kDescent && !descent_started(result)) result.success = false;
     // The last resort (untangle_fallback.h): no valid map, but the handles are where they belong.
     // The fallback ignores the plugins' terms (assembly_plugin.h): not for problems with them.
     if (!result.success && options.untangle_fallback && input.plugins.empty() &&
@@ -346,13 +342,18 @@ SimplexAssemblyResult solve_prepared(PreparedProblem<D>& p, const SimplexAssembl
     verify_boundary_angles<D>(*prepared, result);
     // A valid map over a bound the caller asked for is not what was asked (the last resort above
     // untangles without the bounds): written, and reported as a failure.
+    result.valid = result.success;
     if (!result.verification.within_bound()) result.success = false;
     std::ostringstream message;
-    message << (result.success ? "success: " : "FAILED: ") << result.verification.describe()
-            << ". ";
+    message << (result.success ? "success: "
+                : result.valid ? "no foldovers, over the bound: "
+                               : "FAILED: ")
+            << result.verification.describe() << ". ";
     const std::optional<AssemblyStop> stop = result.stages.outcome<AssemblyStop>(Stage::kAssembly);
     if (result.mode == SolveMode::kSubmesh) {
         message << result.submesh.describe();
+    } else if (result.mode == SolveMode::kDescent) {
+        message << describe_descent(result);
     } else if (result.assembled) {
         message << "Assembled (E~ = " << result.final_assembly << ") after "
                 << result.newton.num_steps() << " iterations";
@@ -365,15 +366,18 @@ SimplexAssemblyResult solve_prepared(PreparedProblem<D>& p, const SimplexAssembl
                         : to_string(result.newton.termination))
                 << ")";
     }
-    // The vertex stages and the fallback, in the order they ran.
+    // The vertex stages and the fallback, in the order they ran (the descent's rounds are
+    // described above).
+    bool described = result.mode == SolveMode::kDescent;
     for (const StageRecord& r : result.stages.records) {
         if (r.stage == Stage::kFallback) {
+            described = false;
             message << ". Then the fallback untangled in vertex variables (" << r.figures
                     << "): " << to_string(r.outcome);
             continue;
         }
         const auto* v = std::get_if<VertexStageOutcome>(&r.outcome);
-        if (r.stage != Stage::kVertexStage || v == nullptr) continue;
+        if (r.stage != Stage::kVertexStage || v == nullptr || described) continue;
         if (newton_ran(*v)) {
             message << ", then " << r.newton_steps << " in vertex variables";
             if (r.termination) message << " (" << to_string(*r.termination) << ")";
@@ -396,6 +400,11 @@ template SimplexAssemblyResult solve_prepared<2>(PreparedProblem<2>&, const Simp
 template SimplexAssemblyResult solve_prepared<3>(PreparedProblem<3>&, const SimplexAssemblyOptions&,
                                                  const SimplexAssemblyObserver&, const StageTimes&,
                                                  VerifiedMap*);
+
+bool descent_started(const SimplexAssemblyResult& result) {
+    // Every run of the vertex stage records at least one round, even a skipped one.
+    return result.mode == SolveMode::kDescent && !result.descent_rounds.empty();
+}
 
 SimplexAssemblyResult run_simplex_assembly(const MappingProblem& problem,
                                            const SimplexAssemblyOptions& options,

@@ -16,7 +16,13 @@
 //   5. verify the recovered positions: inverted and degenerate simplices (against each rest
 //      orientation), handle error, distortion and the bound. Success means no inverted or
 //      degenerate simplex, no branch point, every handle within tolerance and every bound held,
-//      measured on the output.
+//      measured on the output;
+//   6. fall back, when no valid map was found: untangling in vertex variables, then the vertex
+//      stage (untangle_fallback.h).
+// The mode (SolveMode) chooses how 2-4 run: the whole mesh at once, submeshes around the bad
+// simplices (section 4.4), or, from a start without inverted simplices, the vertex stage alone
+// with its bound continued in rounds (the descent: detail/vertex_descent.h). The run's path is
+// SimplexAssemblyResult::stages (stage_trace.h).
 //
 // Triangles map to the plane (from a planar rest shape or from a surface in space), tetrahedra to
 // space. Bad input throws InputError or InvalidArgumentError; numerical outcomes are reported in
@@ -183,13 +189,19 @@ struct SubmeshStats {
 
 struct SimplexAssemblyResult {
     Eigen::MatrixXd positions;  ///< #V x d output map
-    bool success = false;       ///< verification passed and every bound held
-    std::string message;        ///< the outcome in a sentence or two
-    bool assembled = false;     ///< E~_assembly reached the tolerance
+    bool success = false;       ///< valid, and every bound held
+    /// Verification passed (no inverted, degenerate or branched simplex, handles and constraints
+    /// in place, boundary angle sums under 2 pi with E_theta): a valid map, bounds aside.
+    bool valid = false;
+    std::string message;     ///< the outcome in a sentence or two
+    bool assembled = false;  ///< E~_assembly reached the tolerance
     double final_assembly = 0.0;
     double final_lambda = 0.0;
     SolveMode mode = SolveMode::kFull;  ///< the mode that ran
     SubmeshStats submesh;               ///< when mode is kSubmesh
+    /// When mode is kDescent: the vertex stage's rounds, at each bound (ContinuationRound::bound)
+    /// and exponent; empty when the start was not valid.
+    std::vector<ContinuationRound> descent_rounds;
     Verification verification;
     MapQuality initial_quality;  ///< of the initial map
     MapQuality final_quality;    ///< of the output positions
@@ -221,5 +233,10 @@ struct SimplexAssemblyObserver {
 SimplexAssemblyResult run_simplex_assembly(const MappingProblem& problem,
                                            const SimplexAssemblyOptions& options,
                                            const SimplexAssemblyObserver& observer = {});
+
+/// Mode kDescent: whether the start was valid and the descent ran from it (otherwise the trace's
+/// first vertex stage is VertexStageOutcome::kSkippedInfeasibleStart and the positions are the
+/// start's).
+bool descent_started(const SimplexAssemblyResult& result);
 
 }  // namespace sa

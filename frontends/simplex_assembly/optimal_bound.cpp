@@ -189,6 +189,7 @@ OptimalBound run_rounds(MappingProblem problem, SimplexAssemblyOptions options,
         input.energies = std::move(kept_problem.energies);
         SimplexAssemblyResult& r = result.solve;
         verify_result<D>(input, kept_options, r, &prepared->topology);
+        r.valid = r.success;
         r.success =
             r.success && r.verification.within_bound() && (!rounds.accept || rounds.accept(r));
         r.times.verification += watch.seconds();

@@ -515,6 +515,24 @@ void verify_boundary_angles(const PreparedProblem<D>& p, SimplexAssemblyResult& 
     if (result.boundary_violations_after > 0) result.success = false;
 }
 
+template <int D>
+std::vector<unsigned char> vertex_stage_fixed(const PreparedProblem<D>& p) {
+    for (const auto& plugin : p.assembly.plugins) {
+        if (plugin->removes_rigid_motion()) {
+            std::vector<unsigned char> fixed(p.recovery_fixed.size(), 0);
+            for (Index h : p.assembly.handles) fixed[h] = 1;
+            return fixed;
+        }
+    }
+    std::vector<unsigned char> fixed = p.recovery_fixed;
+    for (Index s : p.assembly.anchored_simplices) {
+        for (int k = 0; k <= D; ++k) fixed[p.mesh.simplices(s, k)] = 1;
+    }
+    return fixed;
+}
+
+template std::vector<unsigned char> vertex_stage_fixed<2>(const PreparedProblem<2>&);
+template std::vector<unsigned char> vertex_stage_fixed<3>(const PreparedProblem<3>&);
 template void verify_boundary_angles<2>(const PreparedProblem<2>&, SimplexAssemblyResult&);
 template void verify_boundary_angles<3>(const PreparedProblem<3>&, SimplexAssemblyResult&);
 template void verify_result<2>(const MappingProblem&, const SimplexAssemblyOptions&,

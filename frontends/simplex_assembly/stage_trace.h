@@ -11,8 +11,9 @@
 //   kAssembly       the engine's lambda schedule on the disassembled simplices (engine.h), ended
 //                   by its own tests or by the hand-over of the mesh recovered by Eq. 6 (the
 //                   driver's hook: AssemblyStop::kHook); outcome: AssemblyStop
-//   kVertexStage    Newton in vertex variables from the recovered mesh, with E_C's exponent
-//                   continuation (vertex_stage.h); outcome: VertexStageOutcome
+//   kVertexStage    Newton in vertex variables from the recovered mesh (in the descent mode,
+//                   from the start: once per bound round), with E_C's exponent continuation
+//                   (vertex_stage.h); outcome: VertexStageOutcome
 //   kFallback       the last resort when no valid map was found: untangling in vertex variables,
 //                   then the vertex stage (untangle_fallback.h); outcome: FallbackOutcome
 // The submesh mode's rounds are typed records of their own (SubmeshStats::rounds) and the
@@ -65,6 +66,7 @@ bool newton_ran(VertexStageOutcome outcome);
 /// exponent continuation.
 struct ContinuationRound {
     double s = 1.0;                      ///< E_C's exponent
+    double bound = kInfinity;            ///< E_C's bound K
     double max_distortion_before = 0.0;  ///< the largest barrier distortion at its start
     double max_distortion_after = 0.0;   ///< and of what it kept
     int iterations = 0;                  ///< Newton steps

@@ -115,14 +115,16 @@ SimplexAssemblyResult solve_region(const MappingProblem& input, const MeshTopolo
 template <int D>
 SolveMode choose_mode(const PreparedProblem<D>& p, const SimplexAssemblyOptions& options) {
     if (!p.input->plugins.empty()) {
-        // A plugin's terms cannot be restricted to a region yet (assembly_plugin.h).
-        if (options.mode == SolveMode::kSubmesh) {
+        // A plugin's terms cannot be restricted to a region yet (assembly_plugin.h), nor its
+        // constraints imposed on a start without the assembly's hand-over.
+        if (options.mode == SolveMode::kSubmesh || options.mode == SolveMode::kDescent) {
             throw InvalidArgumentError("plugin '" + p.input->plugins.front()->name() +
                                        "': problems with plugins run in the full mode only "
                                        "(mode full or auto)");
         }
         return SolveMode::kFull;
     }
+    if (options.mode == SolveMode::kDescent) return SolveMode::kDescent;
     if (p.input->boundary_injective) {
         if (options.mode == SolveMode::kSubmesh) {
             throw InvalidArgumentError(

@@ -18,17 +18,6 @@ Index invalid_simplices(const PreparedProblem<D>& p, const Eigen::MatrixXd& posi
     return q.inverted + q.degenerate;
 }
 
-/// The handles and the anchored simplices' vertices: what the vertex stage keeps fixed.
-template <int D>
-std::vector<unsigned char> fixed_vertices(const PreparedProblem<D>& p) {
-    std::vector<unsigned char> fixed(p.mesh.num_vertices(), 0);
-    for (Index h : p.input->handles) fixed[h] = 1;
-    for (Index s : p.assembly.anchored_simplices) {
-        for (int k = 0; k <= D; ++k) fixed[p.mesh.simplices(s, k)] = 1;
-    }
-    return fixed;
-}
-
 }  // namespace
 
 template <int D>
@@ -47,7 +36,7 @@ UntangleResult untangle_prepared(PreparedProblem<D>& p, const SimplexAssemblyOpt
     o.projection_epsilon = options.projection_epsilon;
     o.linear_solver = options.linear_solver;
     o.num_threads = options.num_threads;
-    return untangle<D>(p.mesh, p.frames, start, fixed_vertices<D>(p), o, logger);
+    return untangle<D>(p.mesh, p.frames, start, vertex_stage_fixed(p), o, logger);
 }
 
 template <int D>
@@ -89,7 +78,7 @@ bool untangle_fallback(PreparedProblem<D>& p, const SimplexAssemblyOptions& opti
         result.stages.add(Stage::kVertexStage, VertexStageOutcome::kSkippedTimeLimit);
     } else if (u.untangled && options.vertex_stage && !options.until_valid) {
         const VertexStage vertex = run_vertex_stage<D>(
-            p.mesh, p.frames, p.assembly.energies, positions, fixed_vertices<D>(p),
+            p.mesh, p.frames, p.assembly.energies, positions, vertex_stage_fixed(p),
             with_time_left(options, budget), observer.logger,
             VertexStageTerms<D>{{}, p.assembly.constraints, {}, {}, exponent_continuation<D>(p)});
         if (vertex.ran()) {

@@ -135,16 +135,18 @@ VertexStage run_once(const SimplicialMesh& mesh, const RestFrames<D>& frames,
 
 template <int D>
 ExponentContinuation<D> exponent_continuation(const PreparedProblem<D>& prepared,
-                                              const std::vector<Index>& simplices) {
+                                              const std::vector<Index>& simplices,
+                                              std::optional<double> bound) {
     ExponentContinuation<D> c;
     if (prepared.energy == nullptr) return c;
     const std::shared_ptr<const SimplexEnergy<D>> energy = prepared.energy;
     c.s = energy->options().barrier.s;
     c.distortion = [energy](const Mat<D>& A) { return energy->barrier_distortion(A); };
     const PreparedProblem<D>* p = &prepared;
-    c.energies = [p, energy, simplices](double s) {
+    c.energies = [p, energy, simplices, bound](double s) {
         SimplexEnergyOptions o = energy->options();
         o.barrier.s = s;
+        if (bound) o.barrier.bound = *bound;
         const bool difference = o.mapping_distortion == DistortionType::kDifference;
         std::vector<std::shared_ptr<const SimplexTerm<D>>> terms;
         terms.push_back(std::make_shared<SimplexTermOf<D, SimplexEnergy<D>>>(
@@ -207,6 +209,7 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
         VertexStage v = run_once<D>(mesh, frames, at, x, fixed, o, logger, terms);
         ContinuationRound round;
         round.s = s;
+        round.bound = o.bound;
         round.max_distortion_before = distortion_range(x).largest;
         round.outcome = v.outcome;
         if (v.ran()) {
@@ -233,7 +236,8 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
     // otherwise), and no exponent makes the barrier lower such a simplex. Nothing forces one
     // whose vertices are all free (an assembly that recovered a mesh with one very distorted
     // tetrahedron, as PolyCube's on robustPolycube/cup; a Tutte start's slivers away from the
-    // anchored simplex of vertex_descent.h): the rounds at a lower s, below the cap, lower it.
+    // anchored simplex of detail/vertex_descent.h): the rounds at a lower s, below the cap, lower
+    // it.
     auto beyond_cap_at_fixed_vertex = [&] {
         for (Index s : moving) {
             bool at_fixed = false;
@@ -365,9 +369,11 @@ void record_vertex_stage(StageTrace& trace, const VertexStage& stage, double sec
 }
 
 template ExponentContinuation<2> exponent_continuation<2>(const PreparedProblem<2>&,
-                                                          const std::vector<Index>&);
+                                                          const std::vector<Index>&,
+                                                          std::optional<double>);
 template ExponentContinuation<3> exponent_continuation<3>(const PreparedProblem<3>&,
-                                                          const std::vector<Index>&);
+                                                          const std::vector<Index>&,
+                                                          std::optional<double>);
 
 template VertexStage run_vertex_stage<2>(const SimplicialMesh&, const RestFrames<2>&,
                                          const std::vector<std::shared_ptr<const SimplexTerm<2>>>&,

@@ -15,7 +15,6 @@
 #include "frontends/simplex_assembly/detail/prepared_problem.h"
 #include "frontends/simplex_assembly/detail/untangle_fallback.h"
 #include "frontends/simplex_assembly/map_solve.h"
-#include "frontends/simplex_assembly/vertex_descent.h"
 #include "geometry/mesh/mesh_generators.h"
 #include "geometry/mesh/rest_frames.h"
 #include "geometry/quality/map_quality.h"
@@ -145,12 +144,12 @@ TEST(VertexStageContinuation, LowersASimplexBeyondTheCapWhenNothingIsFixed) {
     EXPECT_EQ(q.inverted + q.degenerate, 0);
 }
 
-// The bound's continuation in vertex variables (vertex_descent.h, bound_rounds.h): a valid start
+// The bound's continuation in vertex variables (the descent mode, bound_rounds.h): a valid start
 // over its bound cannot enter the bounded barrier. The unit square stretched along x by
 // x -> x + 1.5 x^2 (conformal distortion from 1 at x = 0 to 2.125 at x = 1), E_m holding it to
 // that start strongly enough that an unbounded run keeps it over the conformal bound 1.6: then
 // rounds at bounds just above the largest distortion, each lower, and a round at 1.6 itself.
-TEST(VertexDescent, LowersAStretchedStartUnderItsBoundInRounds) {
+MappingProblem stretched_square() {
     MappingProblem problem;
     problem.mesh = grid_triangles(12, 12);
     problem.initial = problem.mesh.vertices;
@@ -159,22 +158,76 @@ TEST(VertexDescent, LowersAStretchedStartUnderItsBoundInRounds) {
         problem.initial(v, 0) = x + 1.5 * x * x;
     }
     problem.reference = problem.initial;
+    return problem;
+}
+
+SimplexAssemblyOptions descent_under(double bound) {
     SimplexAssemblyOptions options;
+    options.mode = SolveMode::kDescent;
     options.mapping_distortion = DistortionType::kDifference;
     options.mu = 1e5;
-    options.bound = 1.6;
-    const VertexDescentResult r = run_vertex_descent(problem, options);
-    ASSERT_TRUE(r.start_valid);
-    EXPECT_TRUE(r.solve.success) << r.solve.message;
-    EXPECT_LE(r.solve.verification.max_distortion, 1.6) << r.solve.message;
-    ASSERT_GE(r.rounds.size(), 3u) << r.solve.message;
-    EXPECT_GT(r.rounds.front().max_distortion_before, 2.0);
-    EXPECT_EQ(r.rounds.front().bound, kInfinity);
-    EXPECT_GT(r.rounds[1].bound, 1.6);
-    EXPECT_LT(r.rounds[1].bound, kInfinity);
-    EXPECT_EQ(r.rounds.back().bound, 1.6);
-    for (std::size_t k = 1; k + 1 < r.rounds.size(); ++k)
-        EXPECT_LE(r.rounds[k].bound, r.rounds[k - 1].bound) << "round " << k;
+    options.bound = bound;
+    return options;
+}
+
+TEST(VertexDescent, LowersAStretchedStartUnderItsBoundInRounds) {
+    const SimplexAssemblyResult r = run_simplex_assembly(stretched_square(), descent_under(1.6));
+    EXPECT_EQ(r.mode, SolveMode::kDescent);
+    ASSERT_TRUE(descent_started(r));
+    EXPECT_TRUE(r.success) << r.message;
+    EXPECT_LE(r.verification.max_distortion, 1.6) << r.message;
+    EXPECT_EQ(r.stages.last(Stage::kAssembly), nullptr);  // no assembly ran
+    const std::vector<ContinuationRound>& rounds = r.descent_rounds;
+    ASSERT_GE(rounds.size(), 3u) << r.message;
+    EXPECT_GT(rounds.front().max_distortion_before, 2.0);
+    EXPECT_EQ(rounds.front().bound, kInfinity);
+    EXPECT_GT(rounds[1].bound, 1.6);
+    EXPECT_LT(rounds[1].bound, kInfinity);
+    EXPECT_EQ(rounds.back().bound, 1.6);
+    for (std::size_t k = 1; k + 1 < rounds.size(); ++k)
+        EXPECT_LE(rounds[k].bound, rounds[k - 1].bound) << "round " << k;
+}
+
+// A bound the rounds cannot reach: the map stays valid and is reported as such (valid), but not
+// as a success, as in the other modes.
+TEST(VertexDescent, AValidMapOverItsBoundIsValidButNotASuccess) {
+    const SimplexAssemblyResult r = run_simplex_assembly(stretched_square(), descent_under(1.0001));
+    ASSERT_TRUE(descent_started(r));
+    EXPECT_TRUE(r.valid) << r.message;
+    EXPECT_FALSE(r.success) << r.message;
+    EXPECT_FALSE(r.verification.within_bound());
+    EXPECT_LT(r.verification.max_distortion, 2.0) << r.message;
+}
+
+// Handles start at their targets and stay there.
+TEST(VertexDescent, StartsWithItsHandlesAtTheirTargets) {
+    MappingProblem problem = stretched_square();
+    problem.handles = {0, 12};  // two corners of the bottom side
+    problem.targets.resize(2, 2);
+    problem.targets << problem.initial.row(0) + Eigen::RowVector2d(-0.05, 0.0),
+        problem.initial.row(12) + Eigen::RowVector2d(0.05, 0.0);
+    const SimplexAssemblyResult r = run_simplex_assembly(problem, descent_under(kInfinity));
+    ASSERT_TRUE(descent_started(r));
+    EXPECT_TRUE(r.success) << r.message;
+    EXPECT_EQ(r.verification.handles, 2);
+    EXPECT_LE(r.verification.handle_error, r.verification.handle_tolerance) << r.message;
+}
+
+// A start with an inverted triangle is not run from: the trace says why, and the start is
+// returned as it is, not valid.
+TEST(VertexDescent, DoesNotRunFromAFoldedStart) {
+    MappingProblem problem = stretched_square();
+    problem.initial(problem.mesh.simplices(0, 0), 0) += 3.0;  // folds the corner's triangles
+    SimplexAssemblyOptions options = descent_under(kInfinity);
+    options.untangle_fallback = false;
+    const SimplexAssemblyResult r = run_simplex_assembly(problem, options);
+    EXPECT_FALSE(descent_started(r));
+    EXPECT_EQ(r.stages.outcome<VertexStageOutcome>(Stage::kVertexStage),
+              VertexStageOutcome::kSkippedInfeasibleStart);
+    EXPECT_TRUE(r.descent_rounds.empty());
+    EXPECT_FALSE(r.valid);
+    EXPECT_GT(r.verification.inverted, 0);
+    EXPECT_TRUE(r.positions.isApprox(problem.initial, 1e-12));
 }
 
 }  // namespace

@@ -55,6 +55,12 @@ struct PreparedProblem {
     std::unique_ptr<VertexRecovery<D>> recovery_;
 };
 
+/// The vertices the vertex stage keeps fixed: the recovery's (handles, the pinned vertex of each
+/// anchored simplex) and every vertex of an anchored simplex, as a free part has no rigid motion
+/// left; with a plugin that fixes the rigid motion itself (PolyCube's planes), the handles only.
+template <int D>
+std::vector<unsigned char> vertex_stage_fixed(const PreparedProblem<D>& p);
+
 /// Checks, normalizes and disassembles `input` (throws InputError on bad input).
 template <int D>
 std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,

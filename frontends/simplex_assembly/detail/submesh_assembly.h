@@ -30,10 +30,10 @@
 
 namespace sa {
 
-/// kFull or kSubmesh for `options.mode`, resolving kAuto by the mesh's size and its share of bad
-/// simplices in the initial map (over options.auto_bad_share: kFull, unless every boundary
-/// vertex is a handle); kSubmesh whatever those when the handles force the barrier beyond
-/// lambda_max (forced_distortion.h).
+/// The mode for `options.mode`: kDescent when asked; otherwise kFull or kSubmesh, resolving kAuto
+/// by the mesh's size and its share of bad simplices in the initial map (over
+/// options.auto_bad_share: kFull, unless every boundary vertex is a handle); kSubmesh whatever
+/// those when the handles force the barrier beyond lambda_max (forced_distortion.h).
 template <int D>
 SolveMode choose_mode(const PreparedProblem<D>& prepared, const SimplexAssemblyOptions& options);
 

@@ -25,7 +25,8 @@
 // its time limit.
 // The result is the iterate with the lowest energy at the requested s (never worse than the
 // start). This is the one exponent continuation: the mesh driver's vertex stage and the descent
-// from a Tutte start (vertex_descent.h, whose bound rounds each run it) both go through it.
+// from a Tutte start (the descent mode, detail/vertex_descent.h, whose bound rounds each run it)
+// both go through it.
 //
 // A run (a round, or the single run without a continuation) whose result has degenerate
 // simplices (the verification's relative rule) while its start had none is undone and ends the
@@ -35,6 +36,7 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -86,10 +88,12 @@ struct ExponentContinuation {
 };
 
 /// The continuation of `prepared`'s built-in E_C, its energies restricted to `simplices` (every
-/// simplex when empty; as SimplexTerm::restricted). Empty without the built-in energy.
+/// simplex when empty; as SimplexTerm::restricted), with E_C's bound at `bound` (the options'
+/// when absent: the descent's rounds lower it). Empty without the built-in energy.
 template <int D>
 ExponentContinuation<D> exponent_continuation(const PreparedProblem<D>& prepared,
-                                              const std::vector<Index>& simplices = {});
+                                              const std::vector<Index>& simplices = {},
+                                              std::optional<double> bound = std::nullopt);
 
 /// What the vertex stage minimizes besides the per-simplex energies.
 template <int D>
