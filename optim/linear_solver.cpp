@@ -118,7 +118,7 @@ struct PrepermutedMatrix {
     std::vector<int> source;  ///< entry p of `permuted` <- entry source[p] of A
     std::vector<int> pivot;   ///< pivot[k] = the row of A that is row k of P A P^T
     /// For one right-hand side; kept only when it splits the tree (CHOLMOD's single-thread
-    /// substitutions are otherwise as fast or faster, as on deform/stretch's factor of 4,222 small
+    /// substitutions are otherwise as fast or faster, as on factors of thousands of small
     /// supernodes). Per Newton iteration, the split against CHOLMOD's: docs/measurements.md,
     /// "Triangular solves alone" and "Figures moved out of the code".
     std::optional<SupernodalSolve> substitution;

@@ -1,5 +1,5 @@
 #pragma once
-// Index lists: handle and locked-vertex files (deform/*_handles.txt, wrench-lock.txt).
+// Index lists: handle and locked-vertex files, as deformation problems ship them.
 //
 // Whitespace-separated non-negative 0-based integers in any layout; `#` starts a comment. A number
 // alone on the first line that equals the count of the numbers after it may be a count line or an
