@@ -9,17 +9,10 @@
 
 #include "frontends/simplex_assembly/disassembly.h"
 #include "optim/errors.h"
+#include "tests/fixtures/random_matrices.h"
 
 namespace sa {
 namespace {
-
-template <int D>
-Mat<D> random_matrix(std::mt19937& rng) {
-    std::normal_distribution<double> normal;
-    Mat<D> A;
-    for (int i = 0; i < D * D; ++i) A(i) = normal(rng);
-    return A;
-}
 
 template <int D>
 double ratio(const Mat<D>& A) {
@@ -48,7 +41,7 @@ template <int D>
 void check_projection(unsigned seed) {
     std::mt19937 rng(seed);
     for (int trial = 0; trial < 200; ++trial) {
-        const Mat<D> A = random_matrix<D>(rng);
+        const Mat<D> A = gaussian_matrix<D>(rng);
         for (double K : {1.0, 1.5, 3.0, 10.0}) {
             const Mat<D> P = project_bounded_distortion<D>(A, K);
             // Inside the bounded-distortion set: positive determinant, ratio within K.
@@ -62,7 +55,7 @@ void check_projection(unsigned seed) {
                 // No matrix of the set near P is closer to A (probe by projected perturbations).
                 for (int k = 0; k < 10; ++k) {
                     const Mat<D> other =
-                        project_bounded_distortion<D>(P + 0.05 * random_matrix<D>(rng), K);
+                        project_bounded_distortion<D>(P + 0.05 * gaussian_matrix<D>(rng), K);
                     EXPECT_LE((A - P).norm(), (A - other).norm() + 1e-10);
                 }
             }
@@ -105,7 +98,7 @@ TEST(BoundedDistortionProjection, ClampsSingularValuesExactly) {
 TEST(BoundedDistortionProjection, KOneIsTheClosestSimilarity) {
     std::mt19937 rng(11);
     for (int trial = 0; trial < 20; ++trial) {
-        const Mat<3> A = random_matrix<3>(rng);
+        const Mat<3> A = gaussian_matrix<3>(rng);
         EXPECT_TRUE(
             project_bounded_distortion<3>(A, 1.0).isApprox(closest_similarity<3>(A), 1e-10));
     }
@@ -142,7 +135,7 @@ void check_largest_conformal(double K) {
     std::mt19937 rng(17);
     const double largest = largest_conformal_distortion(K, D);
     for (int trial = 0; trial < 2000; ++trial) {
-        const Mat<D> P = project_bounded_distortion<D>(4.0 * random_matrix<D>(rng), K);
+        const Mat<D> P = project_bounded_distortion<D>(4.0 * gaussian_matrix<D>(rng), K);
         EXPECT_LE(conformal<D>(P), largest * (1.0 + 1e-12));
     }
     Vec<D> s = Vec<D>::Ones();

@@ -6,23 +6,16 @@
 
 #include "frontends/simplex_assembly/disassembly.h"
 #include "optim/errors.h"
+#include "tests/fixtures/random_matrices.h"
 
 namespace sa {
 namespace {
 
 template <int D>
-Mat<D> random_matrix(std::mt19937& rng) {
-    std::normal_distribution<double> normal;
-    Mat<D> A;
-    for (int i = 0; i < D * D; ++i) A(i) = normal(rng);
-    return A;
-}
-
-template <int D>
 void check_closest() {
     std::mt19937 rng(D);
     for (int trial = 0; trial < 50; ++trial) {
-        const Mat<D> A = random_matrix<D>(rng);
+        const Mat<D> A = gaussian_matrix<D>(rng);
         const Mat<D> R = closest_rotation<D>(A);
         EXPECT_TRUE((R.transpose() * R).isIdentity(1e-12));
         EXPECT_NEAR(R.determinant(), 1.0, 1e-12);
@@ -31,13 +24,13 @@ void check_closest() {
         if (A.determinant() > 0) {
             // No other rotation is closer (probe with perturbed rotations).
             for (int k = 0; k < 20; ++k) {
-                const Mat<D> other = closest_rotation<D>(R + 0.1 * random_matrix<D>(rng));
+                const Mat<D> other = closest_rotation<D>(R + 0.1 * gaussian_matrix<D>(rng));
                 EXPECT_LE((A - R).norm(), (A - other).norm() + 1e-12);
             }
         }
     }
     // Fixed points: a rotation and a similarity project to themselves.
-    const Mat<D> R = closest_rotation<D>(random_matrix<D>(rng));
+    const Mat<D> R = closest_rotation<D>(gaussian_matrix<D>(rng));
     EXPECT_TRUE(closest_rotation<D>(R).isApprox(R, 1e-12));
     EXPECT_TRUE(closest_similarity<D>(2.5 * R).isApprox(2.5 * R, 1e-12));
 }
@@ -101,7 +94,7 @@ TEST(Disassembly, BoundedProjectionOfEveryLinearPart) {
     // reflected, degenerate ones at the median scale.
     std::mt19937 rng(5);
     std::vector<Mat<3>> A(40);
-    for (Mat<3>& a : A) a = random_matrix<3>(rng);
+    for (Mat<3>& a : A) a = gaussian_matrix<3>(rng);
     A[0] = Vec<3>(2.0, 1.0, 0.5).asDiagonal();    // inside
     A[1] = Mat<3>::Zero();                        // degenerate
     A[2] = Vec<3>(1.0, 1.0, -1e-9).asDiagonal();  // nearly flat and inverted

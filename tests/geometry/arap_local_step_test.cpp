@@ -3,26 +3,18 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-#include <Eigen/SVD>
 #include <cmath>
 
 #include "geometry/maps/vertex_recovery.h"
 #include "geometry/mesh/mesh_generators.h"
 #include "geometry/quality/map_quality.h"
+#include "tests/fixtures/random_matrices.h"
 
 namespace sa {
 namespace {
 
 Mat<3> some_rotation() {
     return Eigen::AngleAxisd(0.7, Eigen::Vector3d(1.0, 2.0, -0.5).normalized()).toRotationMatrix();
-}
-
-// The closest rotation to A from its SVD, independent of the fit under test.
-Mat<3> closest_rotation_by_svd(const Mat<3>& A) {
-    const Eigen::JacobiSVD<Mat<3>> svd(A, Eigen::ComputeFullU | Eigen::ComputeFullV);
-    Mat<3> flip = Mat<3>::Identity();
-    if ((svd.matrixU() * svd.matrixV().transpose()).determinant() < 0.0) flip(2, 2) = -1.0;
-    return svd.matrixU() * flip * svd.matrixV().transpose();
 }
 
 // Kuhn tetrahedra are not regular: their edge covariances C_i are not multiples of the identity.
@@ -52,7 +44,7 @@ TEST(ArapLocalStep, IsTheMinimizerOfTheEdgeEnergy) {
     for (Mat<3>& a : A) a = Mat<3>::Identity() + 0.8 * Mat<3>::Random();
     std::vector<Mat<3>> M, projected = A;
     fit_rigid_parts<3>(frames, A, false, M);
-    for (Mat<3>& p : projected) p = closest_rotation_by_svd(p);
+    for (Mat<3>& p : projected) p = closest_rotation_by_svd<3>(p);
     for (Index s = 0; s < mesh.num_simplices(); ++s) {
         const Mat<3> C = 4.0 * frames.corners[s] * frames.corners[s].transpose();
         auto edge_energy = [&](const Mat<3>& R) {

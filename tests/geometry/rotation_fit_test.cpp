@@ -7,6 +7,8 @@
 #include <cmath>
 #include <random>
 
+#include "tests/fixtures/random_matrices.h"
+
 namespace sa {
 namespace {
 
@@ -32,16 +34,8 @@ SvdFit<D> svd_fit(const Mat<D>& M) {
 }
 
 template <int D>
-Mat<D> gaussian(std::mt19937_64& rng) {
-    std::normal_distribution<double> normal;
-    Mat<D> M;
-    for (int i = 0; i < D * D; ++i) M(i) = normal(rng);
-    return M;
-}
-
-template <int D>
 Mat<D> random_rotation(std::mt19937_64& rng) {
-    return svd_fit<D>(gaussian<D>(rng)).rotation;
+    return svd_fit<D>(gaussian_matrix<D>(rng)).rotation;
 }
 
 /// R is a rotation to round-off, no farther from M than the SVD's rotation (tr(R^T M), the
@@ -67,7 +61,7 @@ void expect_closest_from_any_start(const Mat<D>& M, const char* what, std::mt199
     expect_closest<D>(M, fit_rotation<D>(M, exact), what);
     expect_closest<D>(M, fit_rotation<D>(M, random_rotation<D>(rng)), what);
     expect_closest<D>(M, fit_rotation<D>(M, 3.0 * random_rotation<D>(rng)), what);
-    expect_closest<D>(M, fit_rotation<D>(M, gaussian<D>(rng)), what);
+    expect_closest<D>(M, fit_rotation<D>(M, gaussian_matrix<D>(rng)), what);
     expect_closest<D>(M, fit_rotation<D>(M, Mat<D>::Zero()), what);
     expect_closest<D>(M, fit_rotation<D>(M, Mat<D>::Constant(std::nan(""))), what);
     if constexpr (D == 3) {  // the worst hint: half a turn away
@@ -84,9 +78,9 @@ void check_classes() {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (int trial = 0; trial < 300; ++trial) {
         // Random matrices, both signs of det.
-        expect_closest_from_any_start<D>(gaussian<D>(rng), "random", rng);
+        expect_closest_from_any_start<D>(gaussian_matrix<D>(rng), "random", rng);
         // Near a rotation, the ARAP case.
-        expect_closest_from_any_start<D>(random_rotation<D>(rng) + 1e-3 * gaussian<D>(rng),
+        expect_closest_from_any_start<D>(random_rotation<D>(rng) + 1e-3 * gaussian_matrix<D>(rng),
                                          "near a rotation", rng);
         // Near-singular: singular values down to 1e-16, reflected or not.
         Vec<D> s;
@@ -100,8 +94,8 @@ void check_classes() {
         // closest rotation is nearly undetermined there.
         M = random_rotation<D>(rng);
         M.row(D - 1) *= -1.0;
-        expect_closest_from_any_start<D>(M + std::pow(10.0, -14.0 * unit(rng)) * gaussian<D>(rng),
-                                         "reflected", rng);
+        expect_closest_from_any_start<D>(
+            M + std::pow(10.0, -14.0 * unit(rng)) * gaussian_matrix<D>(rng), "reflected", rng);
         // Reflected with distinct singular values: well determined again.
         for (int k = 0; k < D; ++k) s[k] = 1.0 + k + unit(rng);
         M = random_rotation<D>(rng) * s.asDiagonal() * random_rotation<D>(rng);
