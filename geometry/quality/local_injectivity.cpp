@@ -1,5 +1,6 @@
 #include "geometry/quality/local_injectivity.h"
 
+#include <tbb/parallel_for.h>
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -27,7 +28,141 @@ long turns(double sum) {
     return std::abs(sum - 2.0 * M_PI * k) < 0.5 * M_PI ? static_cast<long>(k) : -1;
 }
 
+/// The position of an edge {a, b} in topology.edges (sorted pairs, lexicographic): a search
+/// among the edges of the smaller end only.
+class EdgeLookup {
+  public:
+    explicit EdgeLookup(const MeshTopology& topology) : edges_(topology.edges) {
+        first_.assign(topology.vertex_begin.size() + 1, Index(edges_.size()));
+        for (Index e = Index(edges_.size()) - 1; e >= 0; --e) first_[edges_[e][0]] = e;
+        for (Index v = Index(first_.size()) - 2; v >= 0; --v)
+            first_[v] = std::min(first_[v], first_[v + 1]);
+    }
+    Index operator()(Index a, Index b) const {
+        const std::array<Index, 2> key{std::min(a, b), std::max(a, b)};
+        return static_cast<Index>(std::lower_bound(edges_.begin() + first_[key[0]],
+                                                   edges_.begin() + first_[key[0] + 1], key) -
+                                  edges_.begin());
+    }
+
+  private:
+    const std::vector<std::array<Index, 2>>& edges_;
+    std::vector<Index> first_;  ///< the first edge whose smaller end is >= v
+};
+
+/// Per edge of a tetrahedral mesh (topology.edges): whether it lies on a boundary facet.
+std::vector<unsigned char> boundary_edges(const MeshTopology& topology, const EdgeLookup& edge) {
+    std::vector<unsigned char> on_boundary(topology.edges.size(), 0);
+    for (const BoundaryFacet& f : topology.boundary_facets) {
+        for (int k = 0; k < 3; ++k) on_boundary[edge(f.vertices[k], f.vertices[(k + 1) % 3])] = 1;
+    }
+    return on_boundary;
+}
+
+/// The local vertices of a tetrahedron's six edges, then of the two others.
+constexpr int kTetEdge[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
+                                {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+
+/// The unsigned dihedral angle of a tetrahedron at edge p0 p1 between the faces through p2 and
+/// p3, from unit edges (the angle does not depend on their lengths; raw products overflow at
+/// 1e+-200).
+double dihedral_angle(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+                      const Eigen::Vector3d& p2, const Eigen::Vector3d& p3) {
+    const Eigen::Vector3d ab = (p1 - p0).stableNormalized();
+    const Eigen::Vector3d n1 = ab.cross((p2 - p0).stableNormalized()),
+                          n2 = ab.cross((p3 - p0).stableNormalized());
+    return std::atan2(n1.cross(n2).norm(), n1.dot(n2));
+}
+
 }  // namespace
+
+template <>
+std::vector<Index> wrapped_simplices<2>(const SimplicialMesh& mesh, const MeshTopology& topology,
+                                        const RestFrames<2>& frames, const std::vector<Mat<2>>& A) {
+    const Index nv = mesh.num_vertices(), n = mesh.num_simplices();
+    if (Index(A.size()) != n || frames.size() != n) {
+        throw InvalidArgumentError("wrapped_simplices: one linear part and frame per triangle");
+    }
+    std::vector<double> sum(nv, 0.0);
+    std::vector<unsigned char> positive(nv, 1);
+    for (Index s = 0; s < n; ++s) {
+        const Eigen::Matrix<double, 2, 3> c = A[s] * frames.corners[s];
+        const bool up = A[s].determinant() > 0.0;
+        for (int k = 0; k < 3; ++k) {
+            const Index v = mesh.simplices(s, k);
+            positive[v] &= up;
+            const Eigen::Vector2d e1 = (c.col((k + 1) % 3) - c.col(k)).stableNormalized(),
+                                  e2 = (c.col((k + 2) % 3) - c.col(k)).stableNormalized();
+            sum[v] += std::atan2(e1.x() * e2.y() - e1.y() * e2.x(), e1.dot(e2));
+        }
+    }
+    std::vector<Index> wrapped;
+    for (Index s = 0; s < n; ++s) {
+        for (int k = 0; k < 3; ++k) {
+            const Index v = mesh.simplices(s, k);
+            if (!topology.boundary_vertex[v] && positive[v] && turns(sum[v]) != 1) {
+                wrapped.push_back(s);
+                break;
+            }
+        }
+    }
+    return wrapped;
+}
+
+template <>
+std::vector<Index> wrapped_simplices<3>(const SimplicialMesh& mesh, const MeshTopology& topology,
+                                        const RestFrames<3>& frames, const std::vector<Mat<3>>& A) {
+    const Index n = mesh.num_simplices();
+    if (Index(A.size()) != n || frames.size() != n) {
+        throw InvalidArgumentError("wrapped_simplices: one linear part and frame per tetrahedron");
+    }
+    const EdgeLookup edge_index(topology);
+    const std::vector<unsigned char> on_boundary = boundary_edges(topology, edge_index);
+    // Per tetrahedron, in parallel: its six edges and their signed dihedral angles (an inverted
+    // tetrahedron turns the other way around the edge); then summed per edge.
+    std::vector<std::array<Index, 6>> edge_of(n);
+    std::vector<std::array<double, 6>> angle_of(n);
+    std::vector<unsigned char> up(n);
+    tbb::parallel_for(Index(0), n, [&](Index s) {
+        Eigen::Matrix<double, 3, 4> c = A[s] * frames.corners[s];
+        // Scaled to unit size: the products below neither overflow nor underflow.
+        const double size = c.cwiseAbs().maxCoeff();
+        if (size > 0.0 && std::isfinite(size)) c /= size;
+        up[s] = A[s].determinant() > 0.0;
+        for (int i = 0; i < 6; ++i) {
+            const int* e = kTetEdge[i];
+            edge_of[s][i] = edge_index(mesh.simplices(s, e[0]), mesh.simplices(s, e[1]));
+            // The angle at edge ab between the faces through c and d: with n1 = ab x ac and
+            // n2 = ab x ad, |n1 x n2| = |ab| |det(ab, ac, ad)| and n1 . n2 = |ab|^2 (ac . ad) -
+            // (ab . ad)(ab . ac).
+            const Eigen::Vector3d ab = c.col(e[1]) - c.col(e[0]), ac = c.col(e[2]) - c.col(e[0]),
+                                  ad = c.col(e[3]) - c.col(e[0]);
+            const double det = ab.dot(ac.cross(ad));
+            const double angle = std::atan2(
+                ab.norm() * std::abs(det), ab.squaredNorm() * ac.dot(ad) - ab.dot(ad) * ab.dot(ac));
+            angle_of[s][i] = up[s] ? angle : -angle;
+        }
+    });
+    const std::size_t ne = topology.edges.size();
+    std::vector<double> sum(ne, 0.0);
+    std::vector<unsigned char> positive(ne, 1);
+    for (Index s = 0; s < n; ++s) {
+        for (int i = 0; i < 6; ++i) {
+            sum[edge_of[s][i]] += angle_of[s][i];
+            positive[edge_of[s][i]] &= up[s];
+        }
+    }
+    std::vector<Index> wrapped;
+    for (Index s = 0; s < n; ++s) {
+        for (Index e : edge_of[s]) {
+            if (!on_boundary[e] && positive[e] && turns(sum[e]) != 1) {
+                wrapped.push_back(s);
+                break;
+            }
+        }
+    }
+    return wrapped;
+}
 
 std::vector<Index> branched_vertices(const SimplicialMesh& mesh, const MeshTopology& topology,
                                      const Eigen::MatrixXd& positions) {
@@ -67,31 +202,16 @@ std::vector<Index> branched_edges(const SimplicialMesh& mesh, const MeshTopology
         throw InvalidArgumentError("branched_edges: a tetrahedral mesh and #V x 3 positions");
     }
     const auto& edges = topology.edges;
-    auto edge_index = [&](Index a, Index b) {
-        const std::array<Index, 2> key{std::min(a, b), std::max(a, b)};
-        return static_cast<Index>(std::lower_bound(edges.begin(), edges.end(), key) -
-                                  edges.begin());
-    };
-    std::vector<unsigned char> on_boundary(edges.size(), 0);
-    for (const BoundaryFacet& f : topology.boundary_facets) {
-        for (int k = 0; k < 3; ++k)
-            on_boundary[edge_index(f.vertices[k], f.vertices[(k + 1) % 3])] = 1;
-    }
+    const EdgeLookup edge_index(topology);
+    const std::vector<unsigned char> on_boundary = boundary_edges(topology, edge_index);
     std::vector<double> sum(edges.size(), 0.0);
-    static constexpr int kEdge[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
-                                        {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
     for (Index s = 0; s < mesh.num_simplices(); ++s) {
         Eigen::Vector3d p[4];
         for (int k = 0; k < 4; ++k)
             p[k] = positions.row(mesh.simplices(s, k)).head<3>().transpose();
-        for (const auto& e : kEdge) {
-            // The dihedral angle at edge ab between the faces abc and abd, from unit edges (the
-            // angle does not depend on their lengths; raw products overflow at 1e+-200).
-            const Eigen::Vector3d ab = (p[e[1]] - p[e[0]]).stableNormalized();
-            const Eigen::Vector3d n1 = ab.cross((p[e[2]] - p[e[0]]).stableNormalized()),
-                                  n2 = ab.cross((p[e[3]] - p[e[0]]).stableNormalized());
+        for (const auto& e : kTetEdge) {
             sum[edge_index(mesh.simplices(s, e[0]), mesh.simplices(s, e[1]))] +=
-                std::atan2(n1.cross(n2).norm(), n1.dot(n2));
+                dihedral_angle(p[e[0]], p[e[1]], p[e[2]], p[e[3]]);
         }
     }
     std::vector<Index> branched;

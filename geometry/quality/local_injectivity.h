@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "geometry/mesh/mesh_topology.h"
+#include "geometry/mesh/rest_frames.h"
 
 namespace sa {
 
@@ -27,5 +28,16 @@ std::vector<Index> branched_vertices(const SimplicialMesh& mesh, const MeshTopol
 /// topology.edges, whose tetrahedra's image dihedral angles do not sum to 2 pi (sorted).
 std::vector<Index> branched_edges(const SimplicialMesh& mesh, const MeshTopology& topology,
                                   const Eigen::MatrixXd& positions);
+
+/// The simplices around the wraps of a map given by its linear parts `A` (one per simplex of
+/// `mesh`, in the frames `frames`): the stars of the interior vertices (D = 2) or edges (D = 3)
+/// whose simplices are all positive in the map and whose angles sum to 2 pi k with k != 1
+/// (sorted). The map may have inverted simplices elsewhere; stars with one are not looked at.
+/// A map with wraps is not locally injective however its simplices are oriented, and no motion
+/// that keeps every simplex positive removes one: it is as far from valid as a map with those
+/// simplices inverted.
+template <int D>
+std::vector<Index> wrapped_simplices(const SimplicialMesh& mesh, const MeshTopology& topology,
+                                     const RestFrames<D>& frames, const std::vector<Mat<D>>& A);
 
 }  // namespace sa

@@ -61,8 +61,8 @@ TEST(LocalInjectivity, ABranchPointWithEveryTrianglePositiveIsFound) {
               std::vector<Index>{0});
 }
 
-TEST(LocalInjectivity, ATetrahedralMapWrappedTwiceAroundAnEdgeIsFound) {
-    // kRing tetrahedra around the edge from (0, 0, -1) to (0, 0, 1), closed by a ring of points.
+// kRing tetrahedra around the edge from (0, 0, -1) to (0, 0, 1), closed by a ring of points.
+SimplicialMesh edge_star() {
     SimplicialMesh mesh;
     mesh.vertices.resize(2 + kRing, 3);
     mesh.vertices.row(0) << 0, 0, -1;
@@ -73,18 +73,25 @@ TEST(LocalInjectivity, ATetrahedralMapWrappedTwiceAroundAnEdgeIsFound) {
     }
     mesh.simplices.resize(kRing, 4);
     for (int k = 0; k < kRing; ++k) mesh.simplices.row(k) << 0, 1, 2 + k, 2 + (k + 1) % kRing;
+    return mesh;
+}
+
+// The edge star's map that turns `wraps` times around the edge.
+Eigen::MatrixXd wrapped_star(const SimplicialMesh& mesh, int wraps) {
+    Eigen::MatrixXd x = mesh.vertices;
+    for (int k = 0; k < kRing; ++k) {
+        const double a = 2.0 * M_PI * wraps * k / kRing;
+        x.row(2 + k) << std::cos(a), std::sin(a), 0.0;
+    }
+    return x;
+}
+
+TEST(LocalInjectivity, ATetrahedralMapWrappedTwiceAroundAnEdgeIsFound) {
+    const SimplicialMesh mesh = edge_star();
     const MeshTopology topology = mesh_topology(mesh, "edge star");
-    auto map = [&](int wraps) {
-        Eigen::MatrixXd x = mesh.vertices;
-        for (int k = 0; k < kRing; ++k) {
-            const double a = 2.0 * M_PI * wraps * k / kRing;
-            x.row(2 + k) << std::cos(a), std::sin(a), 0.0;
-        }
-        return x;
-    };
     const RestFrames<3> frames = rest_frames<3>(mesh);
     for (int wraps : {1, 2}) {
-        const Eigen::MatrixXd x = map(wraps);
+        const Eigen::MatrixXd x = wrapped_star(mesh, wraps);
         const MapQuality q = map_quality<3>(linear_parts<3>(mesh, frames, x), frames.volume);
         EXPECT_EQ(q.inverted, 0);
         const std::vector<Index> branched = branched_edges(mesh, topology, x);
@@ -94,6 +101,40 @@ TEST(LocalInjectivity, ATetrahedralMapWrappedTwiceAroundAnEdgeIsFound) {
             ASSERT_EQ(branched.size(), 1u);
             EXPECT_EQ(topology.edges[branched[0]], (std::array<Index, 2>{0, 1}));
         }
+    }
+}
+
+TEST(LocalInjectivity, WrappedSimplicesAreTheStarsOfTheWrapsFromTheLinearParts) {
+    {
+        const SimplicialMesh mesh = edge_star();
+        const MeshTopology topology = mesh_topology(mesh, "edge star");
+        const RestFrames<3> frames = rest_frames<3>(mesh);
+        auto wrapped_of = [&](const Eigen::MatrixXd& x) {
+            return wrapped_simplices<3>(mesh, topology, frames, linear_parts<3>(mesh, frames, x));
+        };
+        EXPECT_TRUE(wrapped_of(wrapped_star(mesh, 1)).empty());
+        std::vector<Index> star(kRing);
+        for (int k = 0; k < kRing; ++k) star[k] = k;
+        EXPECT_EQ(wrapped_of(wrapped_star(mesh, 2)), star);
+        // One tetrahedron turned inside out: the star is not all positive, so not looked at
+        // (its inverted tetrahedron is what keeps the map from being valid).
+        Eigen::MatrixXd folded = wrapped_star(mesh, 2);
+        folded.row(2).swap(folded.row(3));
+        EXPECT_GT(map_quality<3>(linear_parts<3>(mesh, frames, folded), frames.volume).inverted, 0);
+        EXPECT_TRUE(wrapped_of(folded).empty());
+    }
+    {
+        const SimplicialMesh mesh = two_ring_fan();
+        const MeshTopology topology = mesh_topology(mesh, "fan");
+        const RestFrames<2> frames = rest_frames<2>(mesh);
+        auto wrapped_of = [&](const Eigen::MatrixXd& x) {
+            return wrapped_simplices<2>(mesh, topology, frames, linear_parts<2>(mesh, frames, x));
+        };
+        EXPECT_TRUE(wrapped_of(wrapped(mesh, 1)).empty());
+        // Twice around vertex 0: its star, the triangles 3k (the first ring's vertices turn once).
+        std::vector<Index> star;
+        for (int k = 0; k < kRing; ++k) star.push_back(3 * k);
+        EXPECT_EQ(wrapped_of(wrapped(mesh, 2)), star);
     }
 }
 
