@@ -174,6 +174,8 @@ nlohmann::json map_report(const MappingProblem& problem, const SimplexAssemblyOp
                               {"simplices", v.simplices},
                               {"inverted", v.inverted},
                               {"degenerate", v.degenerate},
+                              {"branch_points", v.branched},
+                              {"first_branch_point", v.first_branch},
                               {"handles", v.handles},
                               {"handle_error", v.handle_error},
                               {"handle_tolerance", v.handle_tolerance},

@@ -25,7 +25,8 @@ std::string Verification::describe() const {
     if (branched > 0) {
         out << ", " << branched
             << " branch points (an interior vertex or edge the map wraps around more than once: "
-               "not locally injective)";
+               "not locally injective; the first at "
+            << first_branch << ")";
     }
     if (handles > 0) {
         out << ", largest handle error " << handle_error << " (tolerance " << handle_tolerance
@@ -106,7 +107,7 @@ void start_from_initial_map(PreparedProblem<D>& prepared, const SimplexAssemblyO
     for (std::size_t k = 0; k < in.handles.size(); ++k)
         candidate.row(in.handles[k]) = in.targets[k].transpose();
     VertexStage from_initial = run_vertex_stage<D>(
-        prepared.mesh, prepared.frames, in.energies, candidate, fixed,
+        prepared.mesh, prepared.frames, prepared.topology, in.energies, candidate, fixed,
         with_time_left(options, budget), observer.logger,
         VertexStageTerms<D>{in.fans, in.constraints, in.plugins, in.plugin_stage,
                             exponent_continuation<D>(prepared)});
@@ -238,8 +239,8 @@ void solve_full(PreparedProblem<D>& prepared, const SimplexAssemblyOptions& opti
     } else if (options.vertex_stage && !options.until_valid) {
         const std::vector<unsigned char> fixed = vertex_stage_fixed(prepared);
         VertexStage vertex = run_vertex_stage<D>(
-            mesh, frames, in.energies, recovered, fixed, with_time_left(options, budget),
-            observer.logger,
+            mesh, frames, prepared.topology, in.energies, recovered, fixed,
+            with_time_left(options, budget), observer.logger,
             VertexStageTerms<D>{in.fans, in.constraints, in.plugins, in.plugin_stage,
                                 exponent_continuation<D>(prepared)});
         if (!vertex.ran())

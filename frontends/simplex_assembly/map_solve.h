@@ -109,6 +109,7 @@ struct Verification {
     /// every simplex positive (geometry/quality/local_injectivity.h); counted when none is
     /// inverted.
     Index branched = 0;
+    std::string first_branch;  ///< the first of them: "vertex V" or "edge A-B" (0-based)
     Index handles = 0;
     double handle_error = 0.0;      ///< largest |x_h - target_h|, in the map's units
     double handle_tolerance = 0.0;  ///< handle_tolerance times the initial map's diagonal

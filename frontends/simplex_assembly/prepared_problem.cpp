@@ -464,9 +464,18 @@ void verify_result(const MappingProblem& input, const SimplexAssemblyOptions& op
         // its star twice with every simplex positive (geometry/quality/local_injectivity.h).
         const MeshTopology own = topology ? MeshTopology{} : mesh_topology(original, input.source);
         const MeshTopology& t = topology ? *topology : own;
-        v.branched =
-            static_cast<Index>(D == 2 ? branched_vertices(original, t, result.positions).size()
-                                      : branched_edges(original, t, result.positions).size());
+        if constexpr (D == 2) {
+            const std::vector<Index> branched = branched_vertices(original, t, result.positions);
+            v.branched = static_cast<Index>(branched.size());
+            if (!branched.empty()) v.first_branch = "vertex " + std::to_string(branched[0]);
+        } else {
+            const std::vector<Index> branched = branched_edges(original, t, result.positions);
+            v.branched = static_cast<Index>(branched.size());
+            if (!branched.empty()) {
+                v.first_branch = "edge " + std::to_string(t.edges[branched[0]][0]) + "-" +
+                                 std::to_string(t.edges[branched[0]][1]);
+            }
+        }
     }
     verify_handles<D>(input, options, result.positions, v);
     v.bound = options.builtin_energy ? options.bound : kInfinity;

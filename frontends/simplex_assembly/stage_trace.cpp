@@ -35,7 +35,9 @@ constexpr EnumName<VertexStageOutcome> kVertexStageNames[] = {
      "+inf"},
     {VertexStageOutcome::kSkippedPluginCannotProject, "skipped: a plugin cannot project the start"},
     {VertexStageOutcome::kSkippedBeyondExponentCap,
-     "skipped: simplices so distorted that the barrier cannot rank the others"}};
+     "skipped: simplices so distorted that the barrier cannot rank the others"},
+    {VertexStageOutcome::kSkippedWrappedStart,
+     "skipped: the start wraps around an interior edge or vertex (not locally injective)"}};
 
 constexpr EnumName<FallbackOutcome> kFallbackNames[] = {
     {FallbackOutcome::kReplaced, "replaced the result"},

@@ -57,6 +57,8 @@ enum class VertexStageOutcome {
     kSkippedPluginCannotProject,  ///< a plugin cannot project the start onto its constraints
     kSkippedBeyondExponentCap,    ///< simplices so distorted that the barrier cannot rank the
                                   ///< others (barrier.h's exponent cap; forced by handles)
+    kSkippedWrappedStart,  ///< every simplex positive, but the start wraps around an interior
+                           ///< edge or vertex: the barrier would keep the wrap
 };
 
 /// Whether Newton ran in the vertex stage.

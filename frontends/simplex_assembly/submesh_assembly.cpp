@@ -393,8 +393,8 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
             constraints.push_back(c);
         }
         VertexStage vertex = run_vertex_stage<D>(
-            sub.mesh, frames, energies, start, local_fixed, with_time_left(options, budget),
-            observer.logger,
+            sub.mesh, frames, mesh_topology(sub.mesh, p.input->source), energies, start,
+            local_fixed, with_time_left(options, budget), observer.logger,
             VertexStageTerms<D>{
                 {}, constraints, {}, {}, exponent_continuation<D>(p, sub.simplices)});
         result.vertex_stage = vertex.newton;

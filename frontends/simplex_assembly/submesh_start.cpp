@@ -13,6 +13,7 @@
 #include "geometry/maps/handle_rotation_start.h"
 #include "geometry/mesh/submesh.h"
 #include "geometry/quality/branch_points.h"
+#include "geometry/quality/local_injectivity.h"
 #include "geometry/quality/map_quality.h"
 #include "optim/anderson_acceleration.h"
 #include "optim/stopwatch.h"
@@ -87,6 +88,7 @@ std::vector<Index> bad_simplices(const PreparedProblem<D>& p, const std::vector<
                 if (energy->beyond_exponent_cap(A[s])) rejected[s] = 1;
         });
     }
+    for (Index s : wrapped_simplices<D>(p.mesh, p.topology, p.frames, A)) rejected[s] = 1;
     double largest = 0.0;
     for (double v : det_volume) {
         if (std::isfinite(v)) largest = std::max(largest, v);

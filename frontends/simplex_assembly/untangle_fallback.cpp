@@ -3,6 +3,7 @@
 #include "frontends/simplex_assembly/detail/forced_distortion.h"
 #include "frontends/simplex_assembly/detail/vertex_stage.h"
 #include "frontends/simplex_assembly/map_rank.h"
+#include "geometry/quality/local_injectivity.h"
 #include "geometry/quality/map_quality.h"
 #include "optim/stopwatch.h"
 
@@ -10,12 +11,14 @@ namespace sa {
 
 namespace {
 
-/// Inverted and degenerate simplices of `positions` (normalized), by map_quality()'s rule.
+/// Inverted and degenerate simplices of `positions` (normalized), by map_quality()'s rule, and
+/// the stars of its wraps (local_injectivity.h).
 template <int D>
 Index invalid_simplices(const PreparedProblem<D>& p, const Eigen::MatrixXd& positions) {
-    const MapQuality q =
-        map_quality<D>(linear_parts<D>(p.mesh, p.frames, positions), p.frames.volume);
-    return q.inverted + q.degenerate;
+    const std::vector<Mat<D>> A = linear_parts<D>(p.mesh, p.frames, positions);
+    const MapQuality q = map_quality<D>(A, p.frames.volume);
+    return q.inverted + q.degenerate +
+           static_cast<Index>(wrapped_simplices<D>(p.mesh, p.topology, p.frames, A).size());
 }
 
 }  // namespace
@@ -78,7 +81,7 @@ bool untangle_fallback(PreparedProblem<D>& p, const SimplexAssemblyOptions& opti
         result.stages.add(Stage::kVertexStage, VertexStageOutcome::kSkippedTimeLimit);
     } else if (u.untangled && options.vertex_stage && !options.until_valid) {
         const VertexStage vertex = run_vertex_stage<D>(
-            p.mesh, p.frames, p.assembly.energies, positions, vertex_stage_fixed(p),
+            p.mesh, p.frames, p.topology, p.assembly.energies, positions, vertex_stage_fixed(p),
             with_time_left(options, budget), observer.logger,
             VertexStageTerms<D>{{}, p.assembly.constraints, {}, {}, exponent_continuation<D>(p)});
         if (vertex.ran()) {

@@ -72,7 +72,7 @@ void solve_descent(const PreparedProblem<D>& prepared, const SimplexAssemblyOpti
         SimplexAssemblyOptions o = with_time_left(options, budget);
         o.bound = bound;
         const VertexStage v = run_vertex_stage<D>(
-            prepared.mesh, prepared.frames,
+            prepared.mesh, prepared.frames, prepared.topology,
             continuation.energies ? continuation.energies(options.s) : in.energies, x, fixed, o,
             observer.logger,
             VertexStageTerms<D>{in.fans, in.constraints, in.plugins, in.plugin_stage,

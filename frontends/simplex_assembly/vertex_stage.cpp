@@ -6,6 +6,7 @@
 
 #include "energies/boundary_angle_energy.h"
 #include "frontends/simplex_assembly/engine.h"
+#include "geometry/quality/local_injectivity.h"
 #include "geometry/quality/map_quality.h"
 #include "optim/time_budget.h"
 
@@ -16,6 +17,7 @@ namespace {
 /// One run of the engine on `energies` from `start`.
 template <int D>
 VertexStage run_once(const SimplicialMesh& mesh, const RestFrames<D>& frames,
+                     const MeshTopology& topology,
                      const std::vector<std::shared_ptr<const SimplexTerm<D>>>& energies,
                      const Eigen::MatrixXd& start, const std::vector<unsigned char>& fixed,
                      const SimplexAssemblyOptions& options, const Logger& logger,
@@ -34,6 +36,18 @@ VertexStage run_once(const SimplicialMesh& mesh, const RestFrames<D>& frames,
             result.figures = plugin->name() + " cannot project the start";
             return result;
         }
+    }
+    // A wrap is a fold the barrier keeps: no motion that keeps every simplex positive unwraps it
+    // (local_injectivity.h). Starting from one would only polish a map that cannot verify.
+    const Index wrapped = static_cast<Index>(
+        wrapped_simplices<D>(mesh, topology, frames,
+                             linear_parts<D>(mesh, frames, result.positions.leftCols(D)))
+            .size());
+    if (wrapped > 0) {
+        result.positions = start;
+        result.outcome = VertexStageOutcome::kSkippedWrappedStart;
+        result.figures = std::to_string(wrapped) + " simplices around wrapped edges or vertices";
+        return result;
     }
     std::vector<std::array<Index, D + 1>> simplices(mesh.num_simplices());
     for (Index s = 0; s < mesh.num_simplices(); ++s)
@@ -166,6 +180,7 @@ ExponentContinuation<D> exponent_continuation(const PreparedProblem<D>& prepared
 
 template <int D>
 VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& frames,
+                             const MeshTopology& topology,
                              const std::vector<std::shared_ptr<const SimplexTerm<D>>>& energies,
                              const Eigen::MatrixXd& start, const std::vector<unsigned char>& fixed,
                              const SimplexAssemblyOptions& options, const Logger& logger,
@@ -206,7 +221,7 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
     // One run of Newton from x, undone when it leaves degenerate simplices where x had none.
     auto run = [&](const std::vector<std::shared_ptr<const SimplexTerm<D>>>& at, double s,
                    const Eigen::MatrixXd& x, const SimplexAssemblyOptions& o) {
-        VertexStage v = run_once<D>(mesh, frames, at, x, fixed, o, logger, terms);
+        VertexStage v = run_once<D>(mesh, frames, topology, at, x, fixed, o, logger, terms);
         ContinuationRound round;
         round.s = s;
         round.bound = o.bound;
@@ -376,11 +391,13 @@ template ExponentContinuation<3> exponent_continuation<3>(const PreparedProblem<
                                                           std::optional<double>);
 
 template VertexStage run_vertex_stage<2>(const SimplicialMesh&, const RestFrames<2>&,
+                                         const MeshTopology&,
                                          const std::vector<std::shared_ptr<const SimplexTerm<2>>>&,
                                          const Eigen::MatrixXd&, const std::vector<unsigned char>&,
                                          const SimplexAssemblyOptions&, const Logger&,
                                          const VertexStageTerms<2>&);
 template VertexStage run_vertex_stage<3>(const SimplicialMesh&, const RestFrames<3>&,
+                                         const MeshTopology&,
                                          const std::vector<std::shared_ptr<const SimplexTerm<3>>>&,
                                          const Eigen::MatrixXd&, const std::vector<unsigned char>&,
                                          const SimplexAssemblyOptions&, const Logger&,

@@ -63,9 +63,9 @@ TEST(VertexStageContinuation, LowersTheDistortionOfAnUntangledMap) {
         for (Index h : problem.handles) fixed[h] = 1;
         VertexStageTerms<3> terms;
         terms.exponent = exponent_continuation<3>(*prepared);
-        const VertexStage v =
-            run_vertex_stage<3>(prepared->mesh, prepared->frames, prepared->assembly.energies,
-                                u.positions, fixed, options, Logger{}, terms);
+        const VertexStage v = run_vertex_stage<3>(prepared->mesh, prepared->frames,
+                                                  prepared->topology, prepared->assembly.energies,
+                                                  u.positions, fixed, options, Logger{}, terms);
         EXPECT_EQ(v.outcome, VertexStageOutcome::kRan) << to_string(v.outcome);
         EXPECT_GT(v.continuation_rounds, 1) << v.figures;
         const double after = largest_distortion(*prepared, v.positions);
@@ -132,8 +132,8 @@ TEST(VertexStageContinuation, LowersASimplexBeyondTheCapWhenNothingIsFixed) {
     VertexStageTerms<3> terms;
     terms.exponent = exponent_continuation<3>(*prepared);
     const VertexStage v_stage =
-        run_vertex_stage<3>(prepared->mesh, prepared->frames, prepared->assembly.energies, start,
-                            fixed, options, Logger{}, terms);
+        run_vertex_stage<3>(prepared->mesh, prepared->frames, prepared->topology,
+                            prepared->assembly.energies, start, fixed, options, Logger{}, terms);
     EXPECT_EQ(v_stage.outcome, VertexStageOutcome::kRan) << to_string(v_stage.outcome);
     EXPECT_GT(v_stage.continuation_rounds, 0) << v_stage.figures;
     const double after = largest_distortion(*prepared, v_stage.positions);

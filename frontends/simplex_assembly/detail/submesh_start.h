@@ -60,6 +60,9 @@ struct SubmeshStart {
 /// with a free vertex whose e^{s d} is beyond the barrier's exponent cap (barrier.h): E_C cannot
 /// rank them (they overflowed it before the cap existed), and region solves bring them back.
 /// Simplices whose vertices are all handles are never bad for that reason: they are data.
+/// And the stars of the map's wraps (wrapped_simplices(), local_injectivity.h): all positive but
+/// not locally injective, so not valid either (an untangling that makes a fold positive by
+/// wrapping it twice around an edge does not remove a bad simplex).
 template <int D>
 std::vector<Index> bad_simplices(const PreparedProblem<D>& p, const std::vector<Mat<D>>& A,
                                  bool beyond_cap_allowed = false);

@@ -114,10 +114,13 @@ struct VertexStageTerms {
 /// `start` #V x D in the driver's normalized coordinates; `fixed` flags handles and anchors;
 /// `energies` are the per-simplex energies of A, each evaluated at A = X E^-1 of the vertex
 /// positions X (VertexSimplexEnergy: the adapter of v-SA). Simplices whose vertices are all
-/// fixed are left out. Newton runs as the engine's run() says; with terms.exponent, in the
-/// continuation's rounds when the start's spread of distortions calls for them (above).
+/// fixed are left out. A start with a wrap (every simplex positive, not locally injective:
+/// wrapped_simplices() of local_injectivity.h) is not run from (kSkippedWrappedStart). Newton runs
+/// as the engine's run() says; with terms.exponent, in the continuation's rounds when the start's
+/// spread of distortions calls for them (above).
 template <int D>
 VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& frames,
+                             const MeshTopology& topology,
                              const std::vector<std::shared_ptr<const SimplexTerm<D>>>& energies,
                              const Eigen::MatrixXd& start, const std::vector<unsigned char>& fixed,
                              const SimplexAssemblyOptions& options, const Logger& logger,

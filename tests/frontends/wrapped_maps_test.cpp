@@ -1,0 +1,79 @@
+// Maps wrapped twice around an interior edge, every tetrahedron positive (branch edges,
+// geometry/quality/local_injectivity.h): the verification fails them and names the edge, the
+// vertex stage does not start from one (its barrier would keep the wrap).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "frontends/simplex_assembly/detail/prepared_problem.h"
+#include "frontends/simplex_assembly/detail/vertex_stage.h"
+#include "frontends/simplex_assembly/map_solve.h"
+
+namespace sa {
+namespace {
+
+constexpr int kRing = 8;
+
+/// kRing tetrahedra around the edge from (0, 0, -1) to (0, 0, 1) and their map turning `wraps`
+/// times around it, every tetrahedron positive; all vertices but the edge's ends are handles.
+MappingProblem wrapped_star(int wraps) {
+    MappingProblem p;
+    p.source = "edge star";
+    p.mesh.vertices.resize(2 + kRing, 3);
+    p.mesh.vertices.row(0) << 0, 0, -1;
+    p.mesh.vertices.row(1) << 0, 0, 1;
+    p.mesh.simplices.resize(kRing, 4);
+    p.initial = p.mesh.vertices;
+    for (int k = 0; k < kRing; ++k) {
+        const double a = 2.0 * M_PI * k / kRing, b = wraps * a;
+        p.mesh.vertices.row(2 + k) << std::cos(a), std::sin(a), 0.0;
+        p.initial.row(2 + k) << std::cos(b), std::sin(b), 0.0;
+        p.mesh.simplices.row(k) << 0, 1, 2 + k, 2 + (k + 1) % kRing;
+        p.handles.push_back(2 + k);
+    }
+    p.targets = p.initial(p.handles, Eigen::all);
+    return p;
+}
+
+TEST(WrappedMaps, TheVerificationFailsAWrapAndNamesItsEdge) {
+    // Every vertex fixed: nothing moves, the verification judges the initial map.
+    MappingProblem p = wrapped_star(2);
+    p.handles = {0, 1};
+    for (int k = 0; k < kRing; ++k) p.handles.push_back(2 + k);
+    p.targets = p.initial(p.handles, Eigen::all);
+    const SimplexAssemblyResult r = run_simplex_assembly(p, SimplexAssemblyOptions{});
+    EXPECT_FALSE(r.success);
+    EXPECT_EQ(r.verification.inverted, 0);
+    EXPECT_EQ(r.verification.branched, 1);
+    EXPECT_EQ(r.verification.first_branch, "edge 0-1");
+    EXPECT_NE(r.message.find("the first at edge 0-1"), std::string::npos) << r.message;
+
+    p = wrapped_star(1);
+    p.handles = {0, 1};
+    for (int k = 0; k < kRing; ++k) p.handles.push_back(2 + k);
+    p.targets = p.initial(p.handles, Eigen::all);
+    EXPECT_TRUE(run_simplex_assembly(p, SimplexAssemblyOptions{}).success);
+}
+
+TEST(WrappedMaps, TheVertexStageDoesNotStartFromAWrap) {
+    for (int wraps : {1, 2}) {
+        const MappingProblem p = wrapped_star(wraps);
+        const SimplexAssemblyOptions options;
+        StageTimes times;
+        const auto prepared = prepare_problem<3>(p, options, times);
+        const VertexStage v = run_vertex_stage<3>(
+            prepared->mesh, prepared->frames, prepared->topology, prepared->assembly.energies,
+            prepared->start, vertex_stage_fixed(*prepared), options, Logger{});
+        if (wraps == 1) {
+            EXPECT_TRUE(v.ran()) << to_string(v.outcome);
+        } else {
+            EXPECT_EQ(v.outcome, VertexStageOutcome::kSkippedWrappedStart) << to_string(v.outcome);
+            EXPECT_EQ(v.positions, prepared->start);
+            EXPECT_NE(v.figures.find("8 simplices"), std::string::npos) << v.figures;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace sa
