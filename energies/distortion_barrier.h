@@ -131,6 +131,14 @@ class DistortionBarrier {
         o.bound = K;
         return DistortionBarrier(distortion_, o);
     }
+    /// s of e^{s d}.
+    double exponent() const { return options_.s; }
+    /// The same barrier with exponent scale s (> 0).
+    DistortionBarrier with_exponent(double s) const {
+        BarrierOptions o = options_;
+        o.s = s;
+        return DistortionBarrier(distortion_, o);
+    }
     const F& functor() const { return distortion_; }
 
     double value(Index, const Vec<arity>& a) const {

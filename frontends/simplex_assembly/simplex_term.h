@@ -59,6 +59,14 @@ concept DistortionBarrierEnergy = requires(const E& e, const Mat<D>& A) {
     { e.with_bound(1.0) } -> std::convertible_to<E>;
 };
 
+/// A barrier e^{s d} on a distortion whose exponent's scale s can be changed (exponent(),
+/// with_exponent(s)): the vertex stage's exponent continuation lowers it with E_C's.
+template <class E, int D>
+concept ExponentialBarrierEnergy = DistortionBarrierEnergy<E, D> && requires(const E& e) {
+    { e.exponent() } -> std::convertible_to<double>;
+    { e.with_exponent(1.0) } -> std::convertible_to<E>;
+};
+
 template <int D>
 class SimplexTerm : public SimplexTermBase {
   public:
@@ -97,6 +105,14 @@ class SimplexTerm : public SimplexTermBase {
     /// The same barrier with bound K; throws InvalidArgumentError for other energies.
     virtual std::shared_ptr<const SimplexTerm<D>> with_bound(double) const {
         throw InvalidArgumentError(name() + ": not a barrier on a distortion, it has no bound");
+    }
+    /// For a barrier e^{s d} of the problem's own (a DistortionBarrier): s; 0 for other energies.
+    virtual double exponent() const { return 0.0; }
+    /// Its distortion d at A (+inf where det A <= 0); 0 for other energies.
+    virtual double distortion(const Mat<D>&) const { return 0.0; }
+    /// The same barrier at exponent scale s; throws InvalidArgumentError for other energies.
+    virtual std::shared_ptr<const SimplexTerm<D>> with_exponent(double) const {
+        throw InvalidArgumentError(name() + ": not an exponential barrier");
     }
 };
 
@@ -216,6 +232,29 @@ class SimplexTermOf final : public SimplexTerm<D> {
                 this->name(), std::make_shared<const E>(energy_->with_bound(K)), selected_);
         } else {
             return SimplexTerm<D>::with_bound(K);
+        }
+    }
+
+    double exponent() const override {
+        if constexpr (ExponentialBarrierEnergy<E, D>) {
+            return energy_->exponent();
+        } else {
+            return 0.0;
+        }
+    }
+    double distortion(const Mat<D>& A) const override {
+        if constexpr (ExponentialBarrierEnergy<E, D>) {
+            return energy_->distortion(A);
+        } else {
+            return 0.0;
+        }
+    }
+    std::shared_ptr<const SimplexTerm<D>> with_exponent(double s) const override {
+        if constexpr (ExponentialBarrierEnergy<E, D>) {
+            return std::make_shared<SimplexTermOf>(
+                this->name(), std::make_shared<const E>(energy_->with_exponent(s)), selected_);
+        } else {
+            return SimplexTerm<D>::with_exponent(s);
         }
     }
 

@@ -155,9 +155,23 @@ ExponentContinuation<D> exponent_continuation(const PreparedProblem<D>& prepared
     if (prepared.energy == nullptr) return c;
     const std::shared_ptr<const SimplexEnergy<D>> energy = prepared.energy;
     c.s = energy->options().barrier.s;
-    c.distortion = [energy](const Mat<D>& A) { return energy->barrier_distortion(A); };
+    // The problem's own energies follow the built-in one (set_energies); its exponential barriers
+    // (a deformation's volumetric bound) are continued with E_C, at the same share of their own
+    // exponent, and measured in E_C's units: an untangled map whose squashed simplices sit far up
+    // such a barrier spans as many orders of magnitude as one far up E_C.
+    std::vector<std::shared_ptr<const SimplexTerm<D>>> own, barriers;
+    for (std::size_t k = 1; k < prepared.assembly.energies.size(); ++k) {
+        own.push_back(prepared.assembly.energies[k]);
+        if (own.back()->exponent() > 0.0) barriers.push_back(own.back());
+    }
+    c.distortion = [energy, barriers, s = c.s](const Mat<D>& A) {
+        double d = energy->barrier_distortion(A);
+        for (const auto& barrier : barriers)
+            d = std::max(d, barrier->exponent() / s * barrier->distortion(A));
+        return d;
+    };
     const PreparedProblem<D>* p = &prepared;
-    c.energies = [p, energy, simplices, bound](double s) {
+    c.energies = [p, energy, own, simplices, bound, s0 = c.s](double s) {
         SimplexEnergyOptions o = energy->options();
         o.barrier.s = s;
         if (bound) o.barrier.bound = *bound;
@@ -168,9 +182,9 @@ ExponentContinuation<D> exponent_continuation(const PreparedProblem<D>& prepared
             std::make_shared<const SimplexEnergy<D>>(
                 o, p->frames.volume,
                 difference ? p->assembly.reference_linear : std::vector<Mat<D>>{})));
-        // The problem's own energies follow the built-in one (set_energies).
-        for (std::size_t k = 1; k < p->assembly.energies.size(); ++k)
-            terms.push_back(p->assembly.energies[k]);
+        for (const auto& term : own)
+            terms.push_back(term->exponent() > 0.0 ? term->with_exponent(term->exponent() * s / s0)
+                                                   : term);
         if (!simplices.empty())
             for (auto& term : terms) term = term->restricted(simplices);
         return terms;

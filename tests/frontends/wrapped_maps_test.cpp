@@ -1,14 +1,17 @@
 // Maps wrapped twice around an interior edge, every tetrahedron positive (branch edges,
 // geometry/quality/local_injectivity.h): the verification fails them and names the edge, the
-// vertex stage does not start from one (its barrier would keep the wrap).
+// vertex stage does not start from one (its barrier would keep the wrap); the continuation that
+// lowers what an untangling squashed carries the problem's own barriers.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "frontends/deform/deform_solve.h"
 #include "frontends/simplex_assembly/detail/prepared_problem.h"
 #include "frontends/simplex_assembly/detail/vertex_stage.h"
 #include "frontends/simplex_assembly/map_solve.h"
+#include "tests/fixtures/bar_deformation.h"
 
 namespace sa {
 namespace {
@@ -73,6 +76,33 @@ TEST(WrappedMaps, TheVertexStageDoesNotStartFromAWrap) {
             EXPECT_NE(v.figures.find("8 simplices"), std::string::npos) << v.figures;
         }
     }
+}
+
+TEST(WrappedMaps, TheContinuationCarriesTheProblemsOwnBarrier) {
+    // sa deform's problem: E_m and a volumetric barrier of its own next to the built-in E_C.
+    BarDeformationOptions small;
+    small.length_cells = 6;
+    small.cross_cells = 2;
+    small.slab = 0.2;
+    const BarDeformation bar = bar_deformation(BarPose::kBend, small);
+    const DeformOptions deform_options;
+    const MappingProblem problem = deform_problem(bar.mesh, HandleTargets{bar.handles, bar.targets},
+                                                  bar.mesh.vertices, deform_options);
+    StageTimes times;
+    const auto prepared = prepare_problem<3>(problem, deform_solver_options(deform_options), times);
+    const ExponentContinuation<3> c = exponent_continuation<3>(*prepared);
+    ASSERT_TRUE(c.energies);
+    const std::vector<std::shared_ptr<const SimplexTerm<3>>> at = c.energies(0.25 * c.s);
+    ASSERT_EQ(at.size(), 3u);  // E_C, E_m, the volumetric barrier
+    EXPECT_EQ(at[1]->exponent(), 0.0);
+    EXPECT_DOUBLE_EQ(at[2]->exponent(), 0.25 * prepared->assembly.energies[2]->exponent());
+    // A tetrahedron shrunk to 1/20 of its size: conformal, but its volumetric distortion is in
+    // the thousands, and that is what the continuation measures.
+    const Mat<3> squashed = 0.05 * Mat<3>::Identity();
+    const double volumetric = prepared->assembly.energies[2]->distortion(squashed);
+    EXPECT_GT(volumetric, prepared->energy->barrier_distortion(squashed));
+    EXPECT_DOUBLE_EQ(c.distortion(squashed),
+                     prepared->assembly.energies[2]->exponent() / c.s * volumetric);
 }
 
 }  // namespace

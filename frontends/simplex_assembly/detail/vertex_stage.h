@@ -76,11 +76,14 @@ struct VertexStage {
     std::string figures;
 };
 
-/// The per-simplex energies at another exponent s of E_C, for the continuation.
+/// The per-simplex energies at another exponent s of E_C, for the continuation. The problem's
+/// own exponential barriers (SimplexTerm::exponent() > 0, a DistortionBarrier: the volumetric
+/// bound of `sa deform`) go along: at s_r their exponent is theirs times s_r / s.
 template <int D>
 struct ExponentContinuation {
     double s = 1.0;  ///< the exponent asked for
-    /// E_C's distortion d of A (+inf when det A <= 0).
+    /// E_C's distortion d of A (+inf when det A <= 0); with barriers of the problem's own, the
+    /// largest of d and their s_t d_t / s (their exponent in E_C's units).
     std::function<double(const Mat<D>&)> distortion;
     /// The stage's energies (the same terms on the same simplices) with E_C at exponent s_r;
     /// empty: no continuation.
