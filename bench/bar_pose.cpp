@@ -21,10 +21,18 @@ int main(int argc, char** argv) {
     CLI::App app("The Figure 16 bar, posed by its handle slabs, as files for sa deform");
     std::string pose = "bend", prefix;
     sa::BarDeformationOptions options;
-    app.add_option("--pose", pose, "bend, twist or translate")->capture_default_str();
+    app.add_option("--pose", pose, "bend, twist, translate or bend-twist")->capture_default_str();
     app.add_option("--prefix", prefix, "writes PREFIX.mesh and PREFIX_targets.txt")->required();
     app.add_option("--length-cells", options.length_cells)->capture_default_str();
     app.add_option("--cross-cells", options.cross_cells)->capture_default_str();
+    app.add_option("--length", options.length, "the bar's length (its width is 1)")
+        ->capture_default_str();
+    app.add_option("--bend-degrees", options.bend_degrees)->capture_default_str();
+    app.add_option("--twist-degrees", options.twist_degrees)->capture_default_str();
+    app.add_option("--shift", options.shift, "the translation, in bar widths")
+        ->capture_default_str();
+    app.add_option("--slab", options.slab, "handles within slab * length of either end")
+        ->capture_default_str();
     CLI11_PARSE(app, argc, argv);
     try {
         const sa::BarDeformation bar = sa::bar_deformation(sa::parse_bar_pose(pose), options);

@@ -44,7 +44,7 @@ def cases(data, work, bin_dir):
     # (check_map.py reads no `index x y z` rows: the knight's handles are checked by sa only.)
     out.append(dict(name='knight', rest=os.path.join(data, 'tet', 'decimated-knight.mesh'),
                     args=['--targets', knight], check=None))
-    for name in ['untwist', 'stretch', 'botijo', 'rabbit']:
+    for name in ['untwist', 'stretch', 'botijo', 'rabbit', 'cat']:
         d = os.path.join(data, 'deform', name)
         handles = os.path.join(d, name + '_handles.txt')
         init = os.path.join(d, name + '_init.node')

@@ -61,7 +61,8 @@ TEST(BarDeformation, AboutEightThousandTetrahedraFiveToOneToOne) {
 }
 
 TEST(BarDeformation, LeftSlabStaysRightSlabMovesRigidly) {
-    for (BarPose pose : {BarPose::kBend, BarPose::kTwist, BarPose::kTranslate}) {
+    for (BarPose pose :
+         {BarPose::kBend, BarPose::kTwist, BarPose::kTranslate, BarPose::kBendTwist}) {
         SCOPED_TRACE(to_string(pose));
         const BarDeformation bar = bar_deformation(pose);
         const Slabs s = slabs(bar, 5.0);
@@ -86,6 +87,12 @@ TEST(BarDeformation, LeftSlabStaysRightSlabMovesRigidly) {
                 EXPECT_TRUE(R.isIdentity(1e-12));
                 EXPECT_TRUE(t.isApprox(Eigen::Vector3d(0, 1, 0)));
                 break;
+            case BarPose::kBendTwist:
+                // The bend's end, the cross-section also turned half a turn about the axis (+y).
+                EXPECT_TRUE((R * Eigen::Vector3d::UnitX()).isApprox(Eigen::Vector3d::UnitY()));
+                EXPECT_TRUE((R * Eigen::Vector3d::UnitZ()).isApprox(-Eigen::Vector3d::UnitZ()));
+                EXPECT_TRUE(end.isApprox(Eigen::Vector3d(10 / M_PI, 0.5 + 10 / M_PI, 0.5)));
+                break;
         }
     }
 }
@@ -97,7 +104,7 @@ TEST(BarDeformation, OptionsAndNames) {
     small.bend_degrees = 45.0;
     const BarDeformation bar = bar_deformation(BarPose::kBend, small);
     EXPECT_EQ(bar.mesh.num_simplices(), 10 * 2 * 2 * 6);
-    for (BarPose pose : {BarPose::kBend, BarPose::kTwist, BarPose::kTranslate})
+    for (BarPose pose : {BarPose::kBend, BarPose::kTwist, BarPose::kTranslate, BarPose::kBendTwist})
         EXPECT_EQ(parse_bar_pose(to_string(pose)), pose);
     EXPECT_THROW(parse_bar_pose("stretch"), InvalidArgumentError);
     BarDeformationOptions bad;
