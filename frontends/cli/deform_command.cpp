@@ -93,6 +93,9 @@ nlohmann::json deform_report(const DeformArguments& a, const DeformResult& r) {
     report["rounds"] = rounds;
     report["solve"] = map_report(r.problem, r.solver, r.solve.solve);
     report["success"] = r.success();
+    const std::string warning = r.distortion_warning();
+    report["warnings"] =
+        warning.empty() ? nlohmann::json::array() : nlohmann::json::array({warning});
     report["seconds"] = r.seconds;
     return report;
 }
@@ -234,8 +237,10 @@ int run_deform_command(const DeformArguments& a) {
                 << round.iterations << " iterations, " << format_number(round.time) << " s"
                 << (round.success ? "" : " (not verified within its bounds)") << "\n";
     }
-    summary << "  result:      " << format_quality(solved.final_quality) << "\n"
-            << "  " << solved.message << "\n"
+    summary << "  result:      " << format_quality(solved.final_quality) << "\n";
+    if (const std::string warning = result.distortion_warning(); !warning.empty())
+        summary << "  warning: " << warning << "\n";
+    summary << "  " << solved.message << "\n"
             << "  total " << format_number(result.seconds) << " s; wrote " << a.out
             << picture.wrote() << (a.report.empty() ? "" : ", " + a.report) << "\n";
     plan.commit(summary.str());

@@ -1,5 +1,7 @@
 #include "frontends/deform/deform_solve.h"
 
+#include <cstdio>
+
 #include "energies/difference_energy.h"
 #include "energies/distortion_barrier.h"
 #include "geometry/mesh/rest_frames.h"
@@ -50,6 +52,19 @@ SimplexAssemblyOptions deform_solver_options(const DeformOptions& options) {
     solver.max_time_seconds = options.max_time_seconds;
     solver.num_threads = options.num_threads;
     return solver;
+}
+
+std::string DeformResult::distortion_warning() const {
+    const double start_mean = start.quality.isometric.mean,
+                 result_mean = solve.solve.final_quality.isometric.mean;
+    if (!(result_mean > kDistortionWarningRatio * start_mean)) return {};
+    char line[300];
+    std::snprintf(line, sizeof line,
+                  "the result's mean isometric distortion %.4g is %.3g times the ARAP start's "
+                  "%.4g: the repair of the start's folds distorted simplices the vertex stage "
+                  "could not bring back",
+                  result_mean, result_mean / start_mean, start_mean);
+    return line;
 }
 
 DeformResult deform(const SimplicialMesh& mesh, const HandleTargets& handle_targets,

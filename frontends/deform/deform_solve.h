@@ -37,7 +37,16 @@ struct DeformResult {
     bool success() const {
         return solve.verified && solve.solve.success && solve.solve.verification.within_bound();
     }
+    /// Empty, or one sentence when the result's mean isometric distortion is more than
+    /// kDistortionWarningRatio times the ARAP start's: the solve pulls towards the start (E_m),
+    /// so a result that far from it had folds repaired by squashing or stretching simplices
+    /// that the vertex stage could not bring back. Verified maps are still a success.
+    std::string distortion_warning() const;
 };
+
+/// The ratio of mean isometric distortions (result over ARAP start) above which
+/// DeformResult::distortion_warning() speaks.
+inline constexpr double kDistortionWarningRatio = 2.0;
 
 /// The mapping problem and solver options of the solve from a computed start (exposed for tests
 /// and for users who bring their own start).
