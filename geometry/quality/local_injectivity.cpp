@@ -63,15 +63,24 @@ std::vector<unsigned char> boundary_edges(const MeshTopology& topology, const Ed
 constexpr int kTetEdge[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
                                 {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
 
-/// The unsigned dihedral angle of a tetrahedron at edge p0 p1 between the faces through p2 and
-/// p3, from unit edges (the angle does not depend on their lengths; raw products overflow at
-/// 1e+-200).
-double dihedral_angle(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
-                      const Eigen::Vector3d& p2, const Eigen::Vector3d& p3) {
-    const Eigen::Vector3d ab = (p1 - p0).stableNormalized();
-    const Eigen::Vector3d n1 = ab.cross((p2 - p0).stableNormalized()),
-                          n2 = ab.cross((p3 - p0).stableNormalized());
-    return std::atan2(n1.cross(n2).norm(), n1.dot(n2));
+/// The unsigned dihedral angles of a tetrahedron (its corners, one per column) at its six edges,
+/// in kTetEdge's order. At edge ab between the faces through c and d, with n1 = ab x ac and
+/// n2 = ab x ad: |n1 x n2| = |ab| |det(ab, ac, ad)| and n1 . n2 = |ab|^2 (ac . ad) -
+/// (ab . ad)(ab . ac). The edges are scaled to unit size first: the products neither overflow
+/// nor underflow on meshes at 1e+-200.
+std::array<double, 6> dihedral_angles(const Eigen::Matrix<double, 3, 4>& corners) {
+    Eigen::Matrix<double, 3, 4> c = corners.colwise() - corners.col(0);
+    const double size = c.cwiseAbs().maxCoeff();
+    if (size > 0.0 && std::isfinite(size)) c /= size;
+    std::array<double, 6> angles;
+    for (int i = 0; i < 6; ++i) {
+        const int* e = kTetEdge[i];
+        const Eigen::Vector3d ab = c.col(e[1]) - c.col(e[0]), ac = c.col(e[2]) - c.col(e[0]),
+                              ad = c.col(e[3]) - c.col(e[0]);
+        angles[i] = std::atan2(ab.norm() * std::abs(ab.dot(ac.cross(ad))),
+                               ab.squaredNorm() * ac.dot(ad) - ab.dot(ad) * ab.dot(ac));
+    }
+    return angles;
 }
 
 }  // namespace
@@ -124,23 +133,12 @@ std::vector<Index> wrapped_simplices<3>(const SimplicialMesh& mesh, const MeshTo
     std::vector<std::array<double, 6>> angle_of(n);
     std::vector<unsigned char> up(n);
     tbb::parallel_for(Index(0), n, [&](Index s) {
-        Eigen::Matrix<double, 3, 4> c = A[s] * frames.corners[s];
-        // Scaled to unit size: the products below neither overflow nor underflow.
-        const double size = c.cwiseAbs().maxCoeff();
-        if (size > 0.0 && std::isfinite(size)) c /= size;
         up[s] = A[s].determinant() > 0.0;
+        const std::array<double, 6> angles = dihedral_angles(A[s] * frames.corners[s]);
         for (int i = 0; i < 6; ++i) {
-            const int* e = kTetEdge[i];
-            edge_of[s][i] = edge_index(mesh.simplices(s, e[0]), mesh.simplices(s, e[1]));
-            // The angle at edge ab between the faces through c and d: with n1 = ab x ac and
-            // n2 = ab x ad, |n1 x n2| = |ab| |det(ab, ac, ad)| and n1 . n2 = |ab|^2 (ac . ad) -
-            // (ab . ad)(ab . ac).
-            const Eigen::Vector3d ab = c.col(e[1]) - c.col(e[0]), ac = c.col(e[2]) - c.col(e[0]),
-                                  ad = c.col(e[3]) - c.col(e[0]);
-            const double det = ab.dot(ac.cross(ad));
-            const double angle = std::atan2(
-                ab.norm() * std::abs(det), ab.squaredNorm() * ac.dot(ad) - ab.dot(ad) * ab.dot(ac));
-            angle_of[s][i] = up[s] ? angle : -angle;
+            edge_of[s][i] =
+                edge_index(mesh.simplices(s, kTetEdge[i][0]), mesh.simplices(s, kTetEdge[i][1]));
+            angle_of[s][i] = up[s] ? angles[i] : -angles[i];
         }
     });
     const std::size_t ne = topology.edges.size();
@@ -206,12 +204,13 @@ std::vector<Index> branched_edges(const SimplicialMesh& mesh, const MeshTopology
     const std::vector<unsigned char> on_boundary = boundary_edges(topology, edge_index);
     std::vector<double> sum(edges.size(), 0.0);
     for (Index s = 0; s < mesh.num_simplices(); ++s) {
-        Eigen::Vector3d p[4];
+        Eigen::Matrix<double, 3, 4> corners;
         for (int k = 0; k < 4; ++k)
-            p[k] = positions.row(mesh.simplices(s, k)).head<3>().transpose();
-        for (const auto& e : kTetEdge) {
-            sum[edge_index(mesh.simplices(s, e[0]), mesh.simplices(s, e[1]))] +=
-                dihedral_angle(p[e[0]], p[e[1]], p[e[2]], p[e[3]]);
+            corners.col(k) = positions.row(mesh.simplices(s, k)).head<3>().transpose();
+        const std::array<double, 6> angles = dihedral_angles(corners);
+        for (int i = 0; i < 6; ++i) {
+            sum[edge_index(mesh.simplices(s, kTetEdge[i][0]), mesh.simplices(s, kTetEdge[i][1]))] +=
+                angles[i];
         }
     }
     std::vector<Index> branched;
