@@ -35,7 +35,11 @@ struct NoisyTorus {
             const double a = angle(rng);
             Mat<2> R;
             R << std::cos(a), -std::sin(a), std::sin(a), std::cos(a);
-            phi.push_back(Eigen::Vector2d(stretch(rng), stretch(rng)).asDiagonal() *
+            // Drawn in separate statements: the order in which a call's arguments are evaluated
+            // is unspecified (gcc and clang differ); this is the order the values below came from.
+            const double stretch_v = stretch(rng);
+            const double stretch_u = stretch(rng);
+            phi.push_back(Eigen::Vector2d(stretch_u, stretch_v).asDiagonal() *
                           linear_part<2>(frames, f, uv) * R);
         }
         matching = cross_field_matchings(mesh, topology, frame_cross_directions(frames, phi));
