@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Configures and builds the sanitizer build in build-asan/ (SA_SANITIZER_BUILD): clang 14,
+# Configures and builds the test build in build-asan/ (SA_SANITIZER_BUILD): clang 14,
 # -fsanitize=address,undefined on every target (SA_SANITIZE; UBSan's per-access checks are left
 # to AddressSanitizer, CMakeLists.txt says which), libFuzzer coverage of the file
 # readers and the fuzz targets (SA_FUZZ), -O2 with line tables and assertions on (Eigen's index
 # checks included). The sa command there links the shared libraries and uses the sanitizer's
-# allocator. Arguments are build targets (default: all). Used by run-sanitizer-tests.sh and
+# allocator. Arguments are build targets (default: all). Used by run-tests.sh and
 # run-fuzzers.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -4,7 +4,7 @@
 # undefined-behaviour sanitizers (build-sanitized.sh), starting from seeds the project's writers
 # make. A crash, a sanitizer report, a leak, an allocation over 2 GB or an input taking over 25 s
 # fails the run; the input is kept in build-asan/fuzz/artifacts/ (fix the reader, then add it to
-# tests/fuzz/regressions/<target>/). Prints executions and time per target. CI's third phase
+# tests/fuzz/regressions/<target>/). Prints executions and time per target. CI's last phase
 # (.ci/run; docs/measurements.md, "Reliability").
 # The mutations follow libFuzzer's -seed=SA_FUZZ_SEED (1): from a fresh corpus a run explores the
 # same inputs each time, so that CI checks what was fuzzed before it landed and does not fail on a

@@ -1,57 +1,57 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs the test suite: the README's second command, and what CI runs.
-# Tests that need ../shared/data skip themselves when it is absent.
+# Sets up, builds the test build and runs the test suite: the README's second command and CI's
+# first phase (.ci/run). The test build is clang 14 with -fsanitize=address,undefined in
+# build-asan/ (build-sanitized.sh): every test runs under the sanitizers, and any report (an
+# invalid access, undefined behaviour, a leak) fails its test. Each test program is compiled once:
+# the Release build of the command is checked by check-package.sh and bench/quality_guard.py.
+# With no argument: everything, and the whole suite through ctest (docs/building.md). With
+# arguments: only those test executables (GoogleTest), each run on its own. Leaks inside
+# third-party libraries are suppressed by name in tests/sanitizers/lsan.supp, never the project's
+# own. Tests that need ../shared/data skip themselves when it is absent.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-bash scripts/build.sh
-ctest --test-dir build --output-on-failure --parallel "$(nproc)" --timeout 900
-
-# ---- The installed package: a user's project built against `cmake --install` ------------------
-# Installs the build into a temporary prefix, then configures, builds and runs tests/consumer/
-# against it, outside the main build tree, and checks that no installed library or consumer
-# program defines libgomp's symbols (only the sa command may change its own process).
-check_installed_package() {
-    local work prefix start milliseconds
-    work=$(mktemp -d)
-    prefix="$work/prefix"
-    cmake --install build --prefix "$prefix" >/dev/null
-    start=$(date +%s%N)
-    cmake -S tests/consumer -B "$work/consumer" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-        -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
-    milliseconds=$((($(date +%s%N) - start) / 1000000))
-    echo "installed package: the consumer configured in ${milliseconds} ms"
-    cmake --build "$work/consumer" --parallel "$(nproc)"
-    ctest --test-dir "$work/consumer" --output-on-failure
-    bash scripts/check-no-gomp.sh "$prefix/lib" "$work/consumer"
-    rm -rf "$work"
-}
-check_installed_package
-
-# ---- The optimizer alone: only Eigen, TBB and CHOLMOD ------------------------------------------
-# Configures with geometry and the front-ends off and every other dependency made unfindable (the
-# configure fails should the optimizer's layers come to need one), builds sa::optim and
-# sa::energies as shared libraries, installs them and builds and runs the consumer's optimizer
-# program against them.
-check_optim_alone() {
-    local work
-    work=$(mktemp -d)
-    cmake -S . -B "$work/build" -G Ninja -DCMAKE_BUILD_TYPE=Release --no-warn-unused-cli \
-        -DBUILD_SHARED_LIBS=ON -DSA_BUILD_GEOMETRY=OFF -DSA_BUILD_FRONTENDS=OFF \
-        -DSA_BUILD_TESTS=OFF -DSA_BUILD_EXAMPLES=OFF -DSA_BUILD_BENCHMARKS=OFF \
-        -DCMAKE_DISABLE_FIND_PACKAGE_OpenMesh=ON -DCMAKE_DISABLE_FIND_PACKAGE_VTK=ON \
-        -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=ON \
-        -DCMAKE_DISABLE_FIND_PACKAGE_PkgConfig=ON -DCMAKE_DISABLE_FIND_PACKAGE_X11=ON \
-        -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON -DCMAKE_DISABLE_FIND_PACKAGE_benchmark=ON \
-        -DCMAKE_DISABLE_FIND_PACKAGE_OpenMP=ON >/dev/null
-    cmake --build "$work/build" --parallel "$(nproc)"
-    cmake --install "$work/build" --prefix "$work/prefix" >/dev/null
-    cmake -S tests/consumer -B "$work/consumer" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-        -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
-    cmake --build "$work/consumer" --parallel "$(nproc)"
-    ctest --test-dir "$work/consumer" --output-on-failure
-    bash scripts/check-no-gomp.sh "$work/prefix/lib"
-    echo "optimizer alone: configured, built and used with Eigen, TBB and CHOLMOD only"
-    rm -rf "$work"
-}
-check_optim_alone
+bash scripts/build-sanitized.sh "$@"
+build=${SA_SANITIZER_BUILD:-build-asan}
+root=$(pwd)
+export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:strict_string_checks=1:detect_odr_violation=0"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
+export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0"
+export ASAN_SYMBOLIZER_PATH=${ASAN_SYMBOLIZER_PATH:-$(command -v llvm-symbolizer-14 || true)}
+# A test that needs gcc's build, not a sanitizer finding, left out by name (docs/measurements.md,
+# "The whole suite sanitized"): SerialOpenMP checks the sa command's GOMP_parallel (libgomp);
+# clang's OpenMP is libomp. It runs in the Release build (check-package.sh).
+known=(SerialOpenMP.RegionsRunOnceOnTheCallingThreadOfAnyThread)
+# The tests that render through VTK and Mesa run in a second pass, under ASan and UBSan but
+# without the leak check: Mesa's GL driver is unloaded before exit and LeakSanitizer reports what
+# it held (240 bytes in 3 allocations) as leaked from an unknown module, which no suppression can
+# name; keeping the driver loaded instead made LeakSanitizer's own tracer crash now and then.
+rendering=(CheckerboardPictureTest.ShowsBothSquareColoursAtTheRequestedSize
+    CheckerboardPictureTest.StartsItsOwnXvfbWithoutDisplay
+    PosePictureTest.FoldedTetrahedraInsideShowInRed
+    PosePictureTest.FoldedBoundaryTetrahedraAndTriangles
+    PosePictureTest.MarkedTetrahedraShowInRedOnAValidPose
+    SurfaceValuePicture.ColoursFacesByValueAndFlagsInRed
+    MapPicture.ThreeDimensionsMarkTheInitialFolds
+    SaMapPicture.ThreeDimensionalPictureOrOneLineWhy
+    SaMapPicture.EveryCommandDrawsItsPictureByDefault
+    SaCommand.SeamlessWritesAVerifiedMapItsPictureAndRejectsABadField
+    SaCommand.TetgenOutputWritesBothFilesOrNone
+    PolycubeCommand.EndToEndOnAGeneratedMesh
+    PolycubeCommand.InputAndOutputsAroundTheSolve
+    Sa/BadInputCatalogue.OneLineTheRightStatusAndNothingLeft/DeformPosesABox)
+excluded=$(IFS='|'; echo "${known[*]}")
+rendered=$(IFS='|'; echo "${rendering[*]}")
+if [[ $# -eq 0 ]]; then
+    # A parameterized test's name ends with its parameter's comment: "( |$)".
+    ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)" --timeout 1800 \
+        -E "^($excluded|$rendered)( |$)"
+    ASAN_OPTIONS=${ASAN_OPTIONS/detect_leaks=1/detect_leaks=0} \
+        ctest --test-dir "$build" --output-on-failure --parallel "$(nproc)" --timeout 1800 \
+        -R "^($rendered)( |$)"
+    exit 0
+fi
+for t in "$@"; do
+    echo "run-tests: $t"
+    (cd "$build" && "bin/$t" --gtest_brief=1)
+done

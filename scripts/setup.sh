@@ -16,7 +16,7 @@ packages=(
     libjemalloc-dev
     libcairo2-dev
     libx11-dev xvfb xauth
-    # The sanitizer build and the fuzz targets (run-sanitizer-tests.sh, run-fuzzers.sh): clang,
+    # The test build and the fuzz targets (run-tests.sh, run-fuzzers.sh): clang,
     # its sanitizer and libFuzzer runtimes, llvm-symbolizer for the reports' stack traces.
     clang-14 libclang-rt-14-dev llvm-14
 )
