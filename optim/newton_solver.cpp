@@ -111,7 +111,8 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
     };
     // The Hessian's pattern and its symbolic factorization only now: a callback that takes the
     // start (a hand-over at iteration 0) needs neither, nor a solve whose time is up already
-    // (on a large system they cost as much as an iteration).
+    // (on a large system each costs about as much as an iteration, so the limit is checked
+    // before each).
     if (out_of_time()) return stop_for_time(" before the Hessian's setup");
     Stopwatch watch;
     if (!assembler_ || !assembler_->matches(problem)) {
@@ -122,6 +123,7 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
     }
     HessianAssembler& assembler = *assembler_;
     if (!linear_solver_ || requested_solver_ != opt.linear_solver) {
+        if (out_of_time()) return stop_for_time(" before the symbolic analysis");
         requested_solver_ = opt.linear_solver;
         linear_solver_ = std::make_unique<LinearSolver>(opt.linear_solver);
         if (assembler.num_free() > 0) linear_solver_->analyze(assembler.hessian());
