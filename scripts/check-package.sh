@@ -4,8 +4,8 @@
 # build.sh sa), runs the tests of what the command does to its own process on it (its OpenMP
 # regions through its own GOMP_parallel, libgomp's entry point, which needs gcc's build; memory
 # limits, plugins, OpenBLAS's kernels), then installs the package and builds a user's project
-# against it, and builds the optimizer alone. The test suite itself runs
-# in the test build (run-tests.sh); bench/quality_guard.py runs this build's sa on shared data.
+# against it, and builds the optimizer alone. The test suite itself runs in the test build
+# (run-tests.sh); bench/quality_guard.py runs this build's sa on shared data.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
