@@ -3,9 +3,9 @@
 against the committed table of expected verdicts and distortions (bench/quality_expected.tsv).
 
   python3 bench/quality_guard.py [--sa build/bin/sa] [--data ../shared/data] [--jobs 2]
+  python3 bench/quality_guard.py --update     # rewrite the table from this run
 
 It needs the Release sa and, beside it, bench_bar_pose (bash scripts/build.sh sa bench_bar_pose).
-  python3 bench/quality_guard.py --update     # rewrite the table from this run
 
 Each case runs the sa command, then the independent checker (../shared/tools/check_map.py) on
 what it wrote. Its verdict is `verified` (exit 0 and the checker agrees), `unverified` (exit 1,
