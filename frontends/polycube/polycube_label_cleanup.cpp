@@ -88,16 +88,24 @@ Index remove_teeth(const TetBoundary& boundary, const Eigen::MatrixXd& area_vect
 LabelCleanupReport clean_polycube_labels(const TetBoundary& boundary,
                                          const Eigen::MatrixXd& positions, std::vector<int>& labels,
                                          const LabelCleanupOptions& options) {
+    return clean_polycube_labels_of_areas(boundary, boundary_area_vectors(boundary, positions),
+                                          labels, options);
+}
+
+LabelCleanupReport clean_polycube_labels_of_areas(const TetBoundary& boundary,
+                                                  const Eigen::MatrixXd& area_vectors,
+                                                  std::vector<int>& labels,
+                                                  const LabelCleanupOptions& options,
+                                                  PolycubeCharts* final_charts) {
     if (options.min_neighbours < 0 || options.min_triangles < 0 ||
         !(options.min_area_fraction >= 0.0 && options.min_area_fraction < 1.0) ||
         options.max_rounds < 0) {
         throw InvalidArgumentError("clean_polycube_labels: options out of range");
     }
     const std::vector<int> before = labels;
-    const Eigen::MatrixXd area_vectors = boundary_area_vectors(boundary, positions);
     LabelCleanupReport report;
     for (;;) {
-        const PolycubeCharts charts = polycube_charts(boundary, positions, labels);
+        PolycubeCharts charts = polycube_charts_of_areas(boundary, area_vectors, labels);
         if (report.rounds == 0) report.charts_before = charts.size();
         report.charts_after = charts.size();
         const double total_area = std::accumulate(charts.area.begin(), charts.area.end(), 0.0);
@@ -138,6 +146,8 @@ LabelCleanupReport clean_polycube_labels(const TetBoundary& boundary,
                 clean = clean && why_bad(charts, c, total_area, options) == Reason::kNone;
             }
             report.clean = clean;
+            // Nothing merged and no tooth: the labels are still those these charts were made of.
+            if (final_charts) *final_charts = std::move(charts);
             break;
         }
         ++report.rounds;

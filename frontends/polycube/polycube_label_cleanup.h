@@ -50,4 +50,13 @@ LabelCleanupReport clean_polycube_labels(const TetBoundary& boundary,
                                          const Eigen::MatrixXd& positions, std::vector<int>& labels,
                                          const LabelCleanupOptions& options = {});
 
+/// As clean_polycube_labels(), from the boundary triangles' area vectors (boundary_area_vectors()
+/// of the rest positions, #B x 3): for callers that clean many labellings of one shape. When
+/// `charts` is given, it receives polycube_charts() of the labels as they end.
+LabelCleanupReport clean_polycube_labels_of_areas(const TetBoundary& boundary,
+                                                  const Eigen::MatrixXd& area_vectors,
+                                                  std::vector<int>& labels,
+                                                  const LabelCleanupOptions& options = {},
+                                                  PolycubeCharts* charts = nullptr);
+
 }  // namespace sa

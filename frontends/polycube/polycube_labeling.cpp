@@ -57,10 +57,18 @@ std::vector<int> components(const TetBoundary& boundary, const std::vector<int>&
 
 PolycubeCharts polycube_charts(const TetBoundary& boundary, const Eigen::MatrixXd& positions,
                                const std::vector<int>& labels) {
+    return polycube_charts_of_areas(boundary, boundary_area_vectors(boundary, positions), labels);
+}
+
+PolycubeCharts polycube_charts_of_areas(const TetBoundary& boundary,
+                                        const Eigen::MatrixXd& area_vectors,
+                                        const std::vector<int>& labels) {
     const Index nb = boundary.size();
-    if (static_cast<Index>(labels.size()) != nb) {
+    if (static_cast<Index>(labels.size()) != nb || area_vectors.rows() != nb) {
         throw InvalidArgumentError("polycube_charts: " + std::to_string(labels.size()) +
-                                   " labels for " + std::to_string(nb) + " boundary triangles");
+                                   " labels and " + std::to_string(area_vectors.rows()) +
+                                   " area vectors for " + std::to_string(nb) +
+                                   " boundary triangles");
     }
     for (Index b = 0; b < nb; ++b) {
         if (labels[b] < 0 || labels[b] > 5) {
@@ -78,13 +86,12 @@ PolycubeCharts polycube_charts(const TetBoundary& boundary, const Eigen::MatrixX
     charts.neighbours.assign(count, {});
     charts.area.assign(count, 0.0);
     charts.aligned_area.assign(count, 0.0);
-    const Eigen::MatrixXd area_vectors = boundary_area_vectors(boundary, positions);
     for (Index b = 0; b < nb; ++b) {
         const int c = charts.chart_of[b];
         charts.label[c] = labels[b];
         charts.members[c].push_back(b);
         charts.area[c] += area_vectors.row(b).norm();
-        charts.aligned_area[c] += area_vectors.row(b).dot(label_direction(labels[b]).transpose());
+        charts.aligned_area[c] += label_sign(labels[b]) * area_vectors(b, label_axis(labels[b]));
         for (const Index other : boundary.adjacent[b]) {
             if (other >= 0 && charts.chart_of[other] != c) {
                 charts.neighbours[c].push_back(charts.chart_of[other]);

@@ -56,6 +56,13 @@ struct PolycubeCharts {
 PolycubeCharts polycube_charts(const TetBoundary& boundary, const Eigen::MatrixXd& positions,
                                const std::vector<int>& labels);
 
+/// As polycube_charts(), from the boundary triangles' area vectors (boundary_area_vectors() of
+/// the rest positions, #B x 3) instead of the positions: for callers that chart many labellings
+/// of one shape.
+PolycubeCharts polycube_charts_of_areas(const TetBoundary& boundary,
+                                        const Eigen::MatrixXd& area_vectors,
+                                        const std::vector<int>& labels);
+
 /// Each boundary triangle's closest direction: the label maximizing (outward normal . direction)
 /// (ties to the lower label).
 std::vector<int> closest_axis_labels(const TetBoundary& boundary, const Eigen::MatrixXd& positions);
