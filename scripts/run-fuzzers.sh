@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs every fuzz target of the file readers (tests/fuzz/fuzz_targets.h) for SA_FUZZ_SECONDS
-# (15) seconds each, SA_FUZZ_JOBS (the number of cores) at a time, under the address and
+# (10) seconds each, SA_FUZZ_JOBS (the number of cores) at a time, under the address and
 # undefined-behaviour sanitizers (build-sanitized.sh), starting from seeds the project's writers
 # make. A crash, a sanitizer report, a leak, an allocation over 2 GB or an input taking over 25 s
 # fails the run; the input is kept in build-asan/fuzz/artifacts/ (fix the reader, then add it to
@@ -14,7 +14,7 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 bash scripts/build-sanitized.sh fuzz_targets
 build=${SA_SANITIZER_BUILD:-build-asan}
-seconds=${SA_FUZZ_SECONDS:-15}
+seconds=${SA_FUZZ_SECONDS:-10}
 jobs=${SA_FUZZ_JOBS:-$(nproc)}
 seed=${SA_FUZZ_SEED:-1}
 root=$(pwd)
