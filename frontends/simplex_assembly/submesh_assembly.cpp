@@ -51,15 +51,16 @@ struct Region {
     int rings = 0;
 };
 
-/// Solves one region on `positions` (original units); returns the local result. The region gets
-/// the problem's own energies restricted to its simplices and its constraints on the region's
-/// edges (the others have both ends fixed, outside the region or on its boundary).
+/// Solves one region on `positions` (original units) in `mode`; returns the local result. The
+/// region gets the problem's own energies restricted to its simplices and its constraints on the
+/// region's edges (the others have both ends fixed, outside the region or on its boundary).
 template <int D>
 SimplexAssemblyResult solve_region(const MappingProblem& input, const MeshTopology& topology,
                                    const Eigen::MatrixXd& positions,
                                    const std::vector<unsigned char>& is_handle,
-                                   const Region& region, const SimplexAssemblyOptions& options,
-                                   int threads, const Logger& logger, Submesh& sub) {
+                                   const Region& region, SolveMode mode,
+                                   const SimplexAssemblyOptions& options, int threads,
+                                   const Logger& logger, Submesh& sub) {
     sub = extract_submesh(input.mesh, topology, region.simplices);
     MappingProblem local;
     local.source =
@@ -96,7 +97,7 @@ SimplexAssemblyResult solve_region(const MappingProblem& input, const MeshTopolo
         }
     }
     SimplexAssemblyOptions o = options;
-    o.mode = SolveMode::kFull;
+    o.mode = mode;
     o.num_threads = threads;
     SimplexAssemblyObserver observer;
     if (logger) observer.logger = [&logger](const std::string& line) { logger("    " + line); };
@@ -192,6 +193,12 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
         stats.start_near_bound = near_bound;
     }
     stats.start_time = stage.lap();
+    // A start without a bad simplex (a verified map within its bounds: the optimal bound's rounds)
+    // has nothing to untangle: its regions, around the simplices near their bound, are solved in
+    // vertex variables (the descent mode), where the barrier lowers the largest distortions and
+    // keeps every region valid and within its bounds. Regions with bad simplices need the full
+    // solve's disassembly.
+    const SolveMode region_mode = stats.start_bad == 0 ? SolveMode::kDescent : SolveMode::kFull;
     std::vector<unsigned char> is_handle(input.mesh.num_vertices(), 0);
     for (Index h : input.handles) is_handle[h] = 1;
     // Vertices the solve moved: every one when the start came from Eq. 6, then those of the
@@ -274,7 +281,7 @@ void solve_submeshes(PreparedProblem<D>& p, const SimplexAssemblyOptions& option
                     tbb::parallel_for(std::size_t(0), members.size(), [&](std::size_t i) {
                         solved[i] = solve_region<D>(
                             input, p.topology, positions, is_handle, pending[members[i]],
-                            with_time_left(options, budget), inner,
+                            region_mode, with_time_left(options, budget), inner,
                             members.size() == 1 ? observer.logger : Logger{}, subs[i]);
                     });
                 });

@@ -15,9 +15,11 @@
 //      another one uses;
 //   4. each region is a mapping problem of its own: its vertices shared with simplices outside
 //      it are fixed (with the original handles); it is solved by the full Simplex Assembly
-//      (mode kFull) and its result kept only if verified; a region that fails grows by two rings
-//      and is solved again, up to m_max rings, unless the rings add nothing (the region is its
-//      whole component: solved again, it would fail the same way). Regions that overlap after
+//      (mode kFull), or in vertex variables (mode kDescent) when the start has no bad simplex
+//      (the optimal bound's rounds: a verified map within its bounds, regions around the
+//      simplices near them), and its result kept only if verified; a region that fails grows by two
+//      rings and is solved again, up to m_max rings, unless the rings add nothing (the region is
+//      its whole component: solved again, it would fail the same way). Regions that overlap after
 //      growing conflict: the conflict graph is coloured and each colour's regions are solved side
 //      by side with TBB.
 // When options.max_time_seconds runs out, the start stops at its best iterate so far and no
