@@ -143,7 +143,7 @@ DeformOptions deform_options(const DeformArguments& a) {
 }
 
 PictureOutput plan_deform_files(const DeformArguments& a, OutputPlan& plan) {
-    PictureOutput picture(a.png, a.no_png, a.out);
+    PictureOutput picture(a.png, a.no_png, a.out, a.max_time);
     plan.input("--rest", a.rest);
     plan.input("--handles", a.handles);
     plan.input("--targets", a.targets);

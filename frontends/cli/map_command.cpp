@@ -86,7 +86,7 @@ int run_map_command(const MapArguments& a) {
     options.max_time_seconds = a.max_time;
     options.num_threads = a.threads;
     options.validate();
-    PictureOutput picture(a.png, a.no_png, a.out);
+    PictureOutput picture(a.png, a.no_png, a.out, a.max_time);
     OutputPlan plan(a.force);
     plan.input("--rest", a.rest);
     plan.input("--init", a.init);

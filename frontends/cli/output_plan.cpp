@@ -272,11 +272,13 @@ void OutputPlan::remove_outputs() const {
     }
 }
 
-PictureOutput::PictureOutput(const std::string& png, bool no_png, const std::string& out)
+PictureOutput::PictureOutput(const std::string& png, bool no_png, const std::string& out,
+                             double max_time_seconds)
     : path_(no_png        ? ""
             : png.empty() ? with_extension(out, ".png")
                           : png),
-      option_(png.empty() ? "--png (from --out)" : "--png") {
+      option_(png.empty() ? "--png (from --out)" : "--png"),
+      max_time_seconds_(max_time_seconds) {
     if (!path_.empty() && extension(path_) != ".png")
         throw InvalidArgumentError(option_ + " " + path_ + ": expected a .png file");
 }
@@ -287,6 +289,15 @@ void PictureOutput::plan(OutputPlan& plan) const {
 
 void PictureOutput::draw(OutputPlan& plan, const std::function<void(const std::string&)>& draw) {
     if (path_.empty()) return;
+    const double elapsed = clock_.seconds();
+    if (option_ != "--png" && elapsed > max_time_seconds_) {
+        char why[160];
+        std::snprintf(why, sizeof why,
+                      "--max-time %g had run out (%.2f s); --png %s draws it all the same",
+                      max_time_seconds_, elapsed, path_.c_str());
+        failure_ = why;
+        return;
+    }
     set_activity("drawing --png " + path_);
     const Stopwatch clock;
     try {

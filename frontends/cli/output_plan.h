@@ -29,6 +29,8 @@
 #include <string>
 #include <vector>
 
+#include "optim/stopwatch.h"
+
 #include "frontends/cli/interruption.h"
 
 namespace sa::cli {
@@ -112,8 +114,12 @@ class OutputPlan {
 /// by default `--out` with .png, none with `--no-png`. Its path is planned with the other
 /// outputs (checked before the solve); drawing it may fail (no OpenGL, no X server) without
 /// costing the run anything else: the other outputs are written and one warning line says why.
+/// `--max-time` bounds the whole command's wall-clock time: the default picture is not drawn
+/// once the command has run for longer than that (a 3D picture takes a second or more, most of
+/// it starting VTK's OpenGL context), and the warning says so; a picture asked for with `--png`
+/// is drawn whatever the time.
 ///
-///   const PictureOutput picture(a.png, a.no_png, a.out);  // throws unless P is a .png
+///   const PictureOutput picture(a.png, a.no_png, a.out, a.max_time);  // throws unless P is .png
 ///   picture.plan(plan);                                    // before plan.check()
 ///   ... solve, write the other outputs ...
 ///   picture.draw(plan, [&](const std::string& path) { write_..._png(path, ...); });
@@ -123,7 +129,9 @@ class OutputPlan {
 class PictureOutput {
   public:
     /// Throws InvalidArgumentError `--png P: expected a .png file` for another extension.
-    PictureOutput(const std::string& png, bool no_png, const std::string& out);
+    /// `max_time_seconds` is the command's --max-time, counted from this construction.
+    PictureOutput(const std::string& png, bool no_png, const std::string& out,
+                  double max_time_seconds);
 
     /// The picture's path; "" with --no-png.
     const std::string& path() const { return path_; }
@@ -138,6 +146,8 @@ class PictureOutput {
 
   private:
     std::string path_, option_, drawn_, failure_;
+    double max_time_seconds_;
+    Stopwatch clock_;
 };
 
 }  // namespace sa::cli

@@ -63,7 +63,7 @@ int run_param_command(const ParamArguments& a) {
     if (!a.layout.empty() && extension(a.layout) != ".vtu" && extension(a.layout) != ".vtk") {
         throw InvalidArgumentError(a.layout + ": the layout is written as .vtu or .vtk");
     }
-    PictureOutput picture(a.png, a.no_png, a.out);
+    PictureOutput picture(a.png, a.no_png, a.out, a.max_time);
     const bool named =
         std::find(kInitialMaps.begin(), kInitialMaps.end(), a.init) != kInitialMaps.end();
     OutputPlan plan(a.force);

@@ -97,7 +97,7 @@ PolycubePlan check_polycube_arguments(const PolycubeArguments& a) {
         throw InvalidArgumentError("--report " + a.report + ": expected a .json file");
     }
     plan.vtu = a.vtu;
-    plan.png = PictureOutput(a.png, a.no_png, a.out).path();
+    plan.png = PictureOutput(a.png, a.no_png, a.out, a.max_time).path();
     plan.report = a.report;
     return plan;
 }
@@ -111,7 +111,7 @@ PictureOutput plan_polycube_files(const PolycubeArguments& a, const PolycubePlan
     outputs.file("--out (rest mesh)", plan.rest);
     outputs.file("--out (flags)", plan.flags);
     outputs.file("--vtu", plan.vtu);
-    PictureOutput picture(a.png, a.no_png, a.out);
+    PictureOutput picture(a.png, a.no_png, a.out, a.max_time);
     picture.plan(outputs);
     outputs.file("--report", plan.report);
     outputs.check();

@@ -86,7 +86,7 @@ int run_seamless_command(const SeamlessArguments& a) {
     if (!a.field.empty() && !a.constraints.empty())
         throw InvalidArgumentError("give --field or --constraints, not both");
     const std::string vtu = a.no_vtu ? "" : a.vtu.empty() ? with_extension(a.out, ".vtu") : a.vtu;
-    PictureOutput picture(a.png, a.no_png, a.out);
+    PictureOutput picture(a.png, a.no_png, a.out, a.max_time);
     if (!vtu.empty() && extension(vtu) != ".vtu")
         throw InvalidArgumentError(vtu + ": --vtu takes a .vtu file");
     OutputPlan plan(a.force);

@@ -347,6 +347,17 @@ TEST_F(SaCommand, ParamAndSeamlessTakeMaxTimeAsMapDoes) {
     EXPECT_TRUE(short_param.status == 0 || short_param.status == 1) << short_param.err;
     EXPECT_TRUE(fs::exists(path("uv-short.obj")));
     EXPECT_TRUE(fs::exists(path("uv-short.json")));
+    // The limit bounds the command: the default picture is left out once it has run out, with a
+    // warning (under --quiet too); a picture asked for with --png is drawn all the same.
+    EXPECT_FALSE(fs::exists(path("uv-short.png")));
+    EXPECT_NE(short_param.err.find("sa: warning: no picture " + path("uv-short.png") +
+                                   ": --max-time 1e-06 had run out"),
+              std::string::npos)
+        << short_param.err;
+    const Outcome asked = sa("param --mesh " + path("bump.off") + " --max-time 1e-6 --out " +
+                             path("uv-asked.obj") + " --png " + path("uv-asked.png") + " --quiet");
+    EXPECT_TRUE(asked.status == 0 || asked.status == 1) << asked.err;
+    EXPECT_TRUE(fs::exists(path("uv-asked.png"))) << asked.err;
     const Outcome short_seamless =
         sa("seamless --mesh " + path("sphere.off") + " --max-time 1e-6 --out " +
            path("s-short.obj") + " --no-png --no-vtu --quiet");
