@@ -278,6 +278,7 @@ PictureOutput::PictureOutput(const std::string& png, bool no_png, const std::str
             : png.empty() ? with_extension(out, ".png")
                           : png),
       option_(png.empty() ? "--png (from --out)" : "--png"),
+      asked_(!png.empty()),
       max_time_seconds_(max_time_seconds) {
     if (!path_.empty() && extension(path_) != ".png")
         throw InvalidArgumentError(option_ + " " + path_ + ": expected a .png file");
@@ -289,21 +290,20 @@ void PictureOutput::plan(OutputPlan& plan) const {
 
 void PictureOutput::draw(OutputPlan& plan, const std::function<void(const std::string&)>& draw) {
     if (path_.empty()) return;
-    const double elapsed = clock_.seconds();
-    if (option_ != "--png" && elapsed > max_time_seconds_) {
-        char why[160];
-        std::snprintf(why, sizeof why,
-                      "--max-time %g had run out (%.2f s); --png %s draws it all the same",
-                      max_time_seconds_, elapsed, path_.c_str());
-        failure_ = why;
+    const double elapsed = since_start_.seconds();
+    if (!asked_ && elapsed > max_time_seconds_) {
+        char limit[96];
+        std::snprintf(limit, sizeof limit, "--max-time %g had run out (%.2f s)", max_time_seconds_,
+                      elapsed);
+        failure_ = std::string(limit) + "; --png " + path_ + " draws it all the same";
         return;
     }
     set_activity("drawing --png " + path_);
-    const Stopwatch clock;
+    const Stopwatch drawing;
     try {
         plan.write(path_, draw);
         char took[64];
-        std::snprintf(took, sizeof took, " (%.2f s)", clock.seconds());
+        std::snprintf(took, sizeof took, " (%.2f s)", drawing.seconds());
         drawn_ = path_ + took;
     } catch (const Error& e) {
         failure_ = one_line(e.what());

@@ -146,8 +146,9 @@ class PictureOutput {
 
   private:
     std::string path_, option_, drawn_, failure_;
+    bool asked_;  ///< given with --png (drawn whatever the time)
     double max_time_seconds_;
-    Stopwatch clock_;
+    Stopwatch since_start_;
 };
 
 }  // namespace sa::cli
