@@ -30,6 +30,15 @@ struct LineSearchOptions {
     double armijo = 1e-4;
     /// Trials before the line search reports failure.
     int max_trials = 60;
+    /// Longer steps than Newton's when its model overestimates the curvature: when the first
+    /// trial is the full step (initial_step) and E fell by more than the quadratic model
+    /// predicted, the step is doubled while E keeps falling, within max_step_fraction of the
+    /// largest feasible step. Per-element Hessian projection raises the curvature where an
+    /// element's Hessian is indefinite, and an exponential barrier curves up faster than its
+    /// model: the full step is then too short every time, and Newton converges linearly. For a
+    /// fixed energy minimized to convergence; off where the energy changes between steps (a
+    /// continuation), whose iterates need not approach a minimizer.
+    bool expand = false;
 };
 
 /// Diagonal regularization after a failed factorization (section 4.4, step 3): tau is added to

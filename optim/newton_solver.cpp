@@ -141,6 +141,8 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
     Eigen::VectorXd dx = Eigen::VectorXd::Zero(n);
     Eigen::VectorXd trial(n);
     std::vector<double> trial_term_values;
+    Eigen::VectorXd longer;  // the expanding line search's trials beyond the full step
+    std::vector<double> longer_term_values;
 
     for (int k = 1;; ++k) {
         // Also before the first iteration: the setup and analysis above may have used the time
@@ -275,7 +277,26 @@ NewtonSummary NewtonSolver::run(Problem& problem) {
                           "no decrease along the Newton step after " + std::to_string(trials) +
                               format(" trials (largest feasible step ", max_feasible) + ")");
         }
-        next_step = trials == 1 ? std::min(2.0 * alpha, ls.initial_step) : alpha;
+        // The quadratic model's decrease at alpha: -(alpha g.d + alpha^2 d.Hd / 2), with
+        // d.Hd = -g.d for the factorized H.
+        const double predicted = -slope * alpha * (1.0 - 0.5 * alpha);
+        if (ls.expand && trials == 1 && alpha == ls.initial_step &&
+            energy - trial_energy > predicted) {
+            while (trials < ls.max_trials && (max_feasible == kInfinity ||
+                                              2.0 * alpha <= ls.max_step_fraction * max_feasible)) {
+                longer = x + (2.0 * alpha) * dx;
+                const double longer_energy = problem.value(longer, &longer_term_values);
+                ++trials;
+                if (!(longer_energy < trial_energy)) break;
+                alpha *= 2.0;
+                trial_energy = longer_energy;
+                trial.swap(longer);
+                trial_term_values.swap(longer_term_values);
+            }
+            next_step = ls.initial_step;
+        } else {
+            next_step = trials == 1 ? std::min(2.0 * alpha, ls.initial_step) : alpha;
+        }
 
         record.energy = trial_energy;
         record.energy_change = energy - trial_energy;

@@ -37,6 +37,16 @@ std::string NewtonSummary::brief_report() const {
     return out.str();
 }
 
+std::string NewtonSummary::phase_times() const {
+    std::ostringstream out;
+    out << std::fixed << std::setprecision(2) << "setup " << times.setup << ", evaluate "
+        << times.evaluate << ", project " << times.project << ", assemble " << times.assemble
+        << ", analyze " << times.analyze << ", factorize " << times.factorize << ", solve "
+        << times.solve << ", line search " << times.line_search << ", callbacks "
+        << times.callbacks;
+    return out.str();
+}
+
 std::string NewtonSummary::full_report() const {
     std::ostringstream out;
     auto row = [&](const char* name, double seconds) {

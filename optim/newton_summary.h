@@ -53,6 +53,8 @@ struct NewtonSummary {
 
     /// One line: outcome, energies, steps, time.
     std::string brief_report() const;
+    /// The phase times in one line: "setup 0.01, evaluate 0.28, ..., callbacks 0.02" (seconds).
+    std::string phase_times() const;
     /// Several lines: problem size, solver, outcome, energies, phase times.
     std::string full_report() const;
 };

@@ -426,6 +426,9 @@ AssemblyRun SimplexAssemblyEngine<D>::run(const AssemblyEngineOptions& options,
         newton.decrement_tolerance = newton.function_tolerance = 0.0;
     } else if (options.stop_when_converged) {
         newton.function_tolerance = options.energy_tolerance;
+        // A fixed energy minimized to convergence: steps longer than Newton's where its model
+        // is too curved (LineSearchOptions::expand; not in the schedule, whose lambda moves).
+        newton.line_search.expand = true;
     } else {
         newton.decrement_tolerance = newton.function_tolerance = 0.0;
     }

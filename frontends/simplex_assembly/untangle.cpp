@@ -183,14 +183,10 @@ UntangleResult untangle(const SimplicialMesh& mesh, const RestFrames<D>& frames,
     const std::string how = result.untangled
                                 ? to_string(result.outcome)
                                 : to_string(result.outcome) + ": " + to_string(run.stop);
-    const PhaseTimes& t = result.newton.times;
-    char line[320];
-    std::snprintf(line, sizeof line,
-                  "untangling: %s after %d steps, %.2f s (evaluate %.2f, project %.2f, assemble "
-                  "%.2f, factorize %.2f, solve %.2f, line search %.2f, checks %.2f)",
-                  how.c_str(), result.iterations, t.total, t.evaluate, t.project, t.assemble,
-                  t.factorize, t.solve, t.line_search, t.callbacks);
-    log_line(logger, line);
+    char line[160];
+    std::snprintf(line, sizeof line, "untangling: %s after %d steps, %.2f s (", how.c_str(),
+                  result.iterations, result.newton.times.total);
+    log_line(logger, line + result.newton.phase_times() + ")");
     return result;
 }
 

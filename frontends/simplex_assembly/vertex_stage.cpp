@@ -139,6 +139,11 @@ VertexStage run_once(const SimplicialMesh& mesh, const RestFrames<D>& frames,
     }
     AssemblyRun run = engine.run(options, {.logger = logger, .after_iteration = {}});
     result.newton = std::move(run.newton);
+    char line[160];
+    std::snprintf(line, sizeof line, "vertex stage: %s after %d steps, %.2f s (",
+                  to_string(run.stop).c_str(), result.newton.num_steps(),
+                  result.newton.times.total);
+    log_line(logger, line + result.newton.phase_times() + ")");
     result.stop = run.stop;
     result.outcome = VertexStageOutcome::kRan;
     result.positions.leftCols(D) = engine.positions(engine.problem().variables());

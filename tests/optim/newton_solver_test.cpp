@@ -117,6 +117,42 @@ TEST(NewtonSolver, BarrierProblemNeverEvaluatesAnInfeasiblePoint) {
     EXPECT_LT(summary.iterations[1].max_feasible_step, 1.0);  // the first step was capped
 }
 
+TEST(NewtonSolver, ExpandingLineSearchStaysFeasible) {
+    std::atomic<int> infeasible{0};
+    Problem problem = make_barrier_problem<LogBarrier>(100, &infeasible);
+    NewtonOptions options;
+    options.line_search.expand = true;
+    const NewtonSummary summary = solve(problem, options);
+    ASSERT_TRUE(summary.success()) << summary.full_report();
+    EXPECT_EQ(infeasible.load(), 0);
+    EXPECT_LT((problem.variables().array() - 1.0).abs().maxCoeff(), 1e-6);
+}
+
+// exp((x - c)^2) from x = c + 3: the full Newton step, -u / (1 + 2 u^2) for u = x - c, is a small
+// part of the way, and Newton alone crawls; doubling the step while the energy falls does not.
+TEST(NewtonSolver, ExpandingLineSearchTakesLongerStepsWhereTheModelIsTooCurved) {
+    const int n = 20;
+    auto solve_from_far = [&](bool expand) {
+        Problem problem(Eigen::VectorXd::LinSpaced(n, 3.0, 4.0));
+        std::vector<std::array<Index, 1>> singles;
+        for (int i = 0; i < n; ++i) singles.push_back({i});
+        problem.add_elements<1>("exp", singles, [](const auto& x, Index e) {
+            using std::exp;
+            const auto u = x[0] - 0.1 * static_cast<double>(e);
+            return exp(u * u);
+        });
+        NewtonOptions options;
+        options.line_search.expand = expand;
+        options.gradient_tolerance = 1e-9;
+        const NewtonSummary summary = solve(problem, options);
+        EXPECT_TRUE(summary.success()) << summary.full_report();
+        for (int i = 0; i < n; ++i) EXPECT_NEAR(problem.variables()[i], 0.1 * i, 1e-6);
+        return summary.num_steps();
+    };
+    const int plain = solve_from_far(false), expanded = solve_from_far(true);
+    EXPECT_LT(2 * expanded, plain) << "plain " << plain << ", expanded " << expanded;
+}
+
 TEST(NewtonSolver, InfiniteTrialValuesAreRejectedWithoutMaxStep) {
     std::atomic<int> infeasible{0};
     Problem problem = make_barrier_problem<LogBarrierWithoutMaxStep>(100, &infeasible);
