@@ -187,11 +187,13 @@ SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& 
     // Not when the handles put a simplex beyond the barrier's exponent cap (forced_distortion.h,
     // barrier.h): no region solve on E_C can rank the simplices around it (the generated
     // fixed-boundary problems of bench/map_benchmarks.py with --flatten).
+    const bool forced_beyond_cap =
+        !barrier_forced_simplices<D>(p, options, kBarrierExponentCap).empty();
     const Index regions =
         static_cast<Index>(grow_rings(p.mesh, p.topology, start.bad, options.rings).size());
     if (!rotations &&
         regions <= (D == 2 ? options.auto_full_triangles : options.auto_full_tetrahedra) &&
-        barrier_forced_simplices<D>(p, options, kBarrierExponentCap).empty()) {
+        !forced_beyond_cap) {
         start.choice.small_regions = true;
         return start;
     }
@@ -252,15 +254,16 @@ SubmeshStart submesh_start(PreparedProblem<D>& p, const SimplexAssemblyOptions& 
     // The untangling moves every free vertex; a region solve only the rings around the bad
     // simplices, in r-SA's D^2 variables per simplex. When the regions have fewer variables than
     // the mesh's free vertex positions, the rounds go first, and the mesh driver untangles the
-    // whole mesh if they fail (untangle_fallback.h). deform/cat: ARAP left 3 bad tetrahedra,
-    // whose regions (3,377 of 94,441 tetrahedra) round 0 solved, where the untangling took 30 s
-    // and was not kept (its map wrapped edges). tlc/armadillo-598 and the knight of
-    // bench/knight_pose.py: regions of 72% and 71% of the mesh, untangled.
+    // whole mesh if they fail (untangle_fallback.h); not where the handles force a simplex
+    // beyond the exponent cap, as for the local defects above. deform/cat: ARAP left 3 bad
+    // tetrahedra, whose regions (3,377 of 94,441 tetrahedra) round 0 solved, where the
+    // untangling took 30 s and was not kept (its map wrapped edges). tlc/armadillo-598 and the
+    // knight of bench/knight_pose.py: regions of 72% and 71% of the mesh, untangled.
     const Index regions_after =
         static_cast<Index>(grow_rings(p.mesh, p.topology, start.bad, options.rings).size());
     const Index free_vertices =
         static_cast<Index>(std::count(p.recovery_fixed.begin(), p.recovery_fixed.end(), 0));
-    if (options.untangle_fallback && regions_after * D < free_vertices) {
+    if (options.untangle_fallback && !forced_beyond_cap && regions_after * D < free_vertices) {
         start.choice.small_regions = true;
         return start;
     }

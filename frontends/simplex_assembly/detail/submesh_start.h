@@ -31,8 +31,9 @@
 //      similarities and cannot see which simplices are inverted: on a fixed boundary with a
 //      large tangled region (../shared/data/tlc/armadillo-598) they never improve on M^0.
 //      Not when the regions around the bad simplices have fewer variables (D^2 per simplex)
-//      than the mesh's free vertex positions and the driver's untangling fallback is on: the
-//      rounds go first, and the fallback untangles the whole mesh if they fail.
+//      than the mesh's free vertex positions, the driver's untangling fallback is on and no
+//      simplex is forced beyond the exponent cap: the rounds go first, and the fallback
+//      untangles the whole mesh if they fail.
 
 #include <optional>
 #include <string>
