@@ -5,10 +5,13 @@
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
+#include <complex>
+#include <optional>
 
 #include "geometry/maps/harmonic_map.h"
 #include "geometry/mesh/boundary_loops.h"
 #include "optim/errors.h"
+#include "optim/hermitian_solve.h"
 #include "optim/linear_solver.h"
 
 namespace sa {
@@ -135,7 +138,7 @@ Eigen::MatrixXd lscm(const SimplicialMesh& mesh, const MeshTopology& topology) {
     const Index nv = mesh.num_vertices();
     Eigen::MatrixXd x = Eigen::MatrixXd::Zero(nv, 2);
     x.row(b) << (mesh.point(b) - mesh.point(a)).norm(), 0.0;
-    // Unknowns: u of every vertex but the pins, then v in the same order.
+    // Unknowns: u + iv of every vertex but the pins.
     std::vector<Index> free_index(nv, -1);
     Index nf = 0;
     for (Index v = 0; v < nv; ++v) {
@@ -150,11 +153,11 @@ Eigen::MatrixXd lscm(const SimplicialMesh& mesh, const MeshTopology& topology) {
     // with L the cotangent Laplacian (L_ij = -(cot a_ij + cot b_ij) / 2), the sum over the edges
     // of the boundary (and between triangles oriented differently in the plane), directed as
     // their triangle t lists them, and sigma_t = +-1 the orientation of t (+1 in space).
-    // Assembled per triangle, the u-v products of every interior edge cancel only in value: they
-    // would stay in the pattern and couple u and v everywhere (twice the entries per row, about
-    // eight times the factorization's flops). Here u and v are coupled on the boundary only, and
-    // the lower triangle is written column by column from the edges (no triplets, no rest frames:
-    // a quarter of the memory, which on a million triangles is most of this function's time).
+    // Written as E = u^T L u + v^T L v + 2 v^T C u with C antisymmetric (nonzero on those
+    // edges only), E is z^H (L + iC) z for z = u + iv: the minimizer solves one Hermitian
+    // system with L's pattern (optim/hermitian_solve.h), half the unknowns of the real one and
+    // a smaller factor. Its lower triangle is written column by column from the edges (no
+    // triplets, no rest frames: on a million triangles memory is most of this function's time).
     const bool planar = mesh.ambient_dimension() == 2;
     auto corner_cotangent = [&](Index s, int k) {  // cot of the angle at local corner k
         const Eigen::Vector3d p = mesh.point(mesh.simplices(s, k));
@@ -176,45 +179,84 @@ Eigen::MatrixXd lscm(const SimplicialMesh& mesh, const MeshTopology& topology) {
                    ? 1
                    : -1;
     };
-    struct WeightedEdge {
-        Index a, b;  // a < b
-        double w;    // (cot a_ab + cot b_ab) / 2 = -L_ab
+    using Complex = std::complex<double>;
+    // Right-hand side r + is: r from the u rows, s from the v rows, for the pins' terms.
+    Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(nf);
+
+    // Column counts: the diagonal and the neighbours of larger index.
+    std::vector<int> begin(nf + 1, 0);
+    for (Index f = 0; f < nf; ++f) begin[f + 1] = 1;
+    auto count_edge = [&](Index a, Index b) {
+        const Index fa = free_index[a], fb = free_index[b];
+        if (fa >= 0 && fb >= 0) ++begin[std::min(fa, fb) + 1];
     };
-    std::vector<WeightedEdge> edges;
-    edges.reserve(topology.interior_facets.size() + topology.boundary_facets.size());
-    for (const InteriorFacet& f : topology.interior_facets) {
-        edges.push_back({f.vertices[0], f.vertices[1],
-                         0.5 * (corner_cotangent(f.simplex[0], f.opposite[0]) +
-                                corner_cotangent(f.simplex[1], f.opposite[1]))});
-    }
+    for (const InteriorFacet& f : topology.interior_facets)
+        count_edge(f.vertices[0], f.vertices[1]);
     for (const BoundaryFacet& f : topology.boundary_facets)
-        edges.push_back(
-            {f.vertices[0], f.vertices[1], 0.5 * corner_cotangent(f.simplex, f.opposite)});
-    // Coupling of u_i and v_j: entries (row v_j, column u_i) of the lower triangle, or
-    // right-hand side terms where a pin is involved.
-    struct Coupling {
-        Index row, col;
-        double value;
-    };
-    std::vector<Coupling> coupling;
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(2 * nf);
-    // H[u_i][v_j] = H[v_j][u_i] += h (the energy q^T H q gains 2 h u_i v_j).
-    auto couple = [&](Index i, Index j, double h) {
-        const Index fi = free_index[i], fj = free_index[j];
-        if (fi >= 0 && fj >= 0) {
-            coupling.push_back({nf + fj, fi, h});
-        } else if (fi >= 0) {
-            rhs[fi] -= h * x(j, 1);
-        } else if (fj >= 0) {
-            rhs[nf + fj] -= h * x(i, 0);
+        count_edge(f.vertices[0], f.vertices[1]);
+    for (Index f = 0; f < nf; ++f) begin[f + 1] += begin[f];
+    Eigen::SparseMatrix<Complex> lower(nf, nf);
+    lower.resizeNonZeros(begin[nf]);
+    int* outer = lower.outerIndexPtr();
+    int* rows = lower.innerIndexPtr();
+    Complex* values = lower.valuePtr();
+    std::copy(begin.begin(), begin.end(), outer);
+    std::vector<int> cursor(begin.begin(), begin.end() - 1);
+    for (Index f = 0; f < nf; ++f) {
+        rows[cursor[f]] = static_cast<int>(f);
+        values[cursor[f]++] = 0.0;
+    }
+    // L_ab = -w with w = (cot a_ab + cot b_ab) / 2, in both u and v.
+    auto add_edge = [&](Index a, Index b, double w) {
+        const Index fa = free_index[a], fb = free_index[b];
+        if (fa >= 0) values[begin[fa]] += w;
+        if (fb >= 0) values[begin[fb]] += w;
+        if (fa >= 0 && fb >= 0) {
+            const Index column = std::min(fa, fb);
+            rows[cursor[column]] = static_cast<int>(std::max(fa, fb));
+            values[cursor[column]++] = -w;
+        } else if (fa >= 0) {
+            rhs[fa] += w * Complex(x(b, 0), x(b, 1));
+        } else if (fb >= 0) {
+            rhs[fb] += w * Complex(x(a, 0), x(a, 1));
         }
     };
+    for (const InteriorFacet& f : topology.interior_facets) {
+        add_edge(f.vertices[0], f.vertices[1],
+                 0.5 * (corner_cotangent(f.simplex[0], f.opposite[0]) +
+                        corner_cotangent(f.simplex[1], f.opposite[1])));
+    }
+    for (const BoundaryFacet& f : topology.boundary_facets)
+        add_edge(f.vertices[0], f.vertices[1], 0.5 * corner_cotangent(f.simplex, f.opposite));
+    // Rows in order within each column (a few entries each), for the lookups below.
+    std::vector<std::pair<int, Complex>> column_entries;
+    for (Index f = 0; f < nf; ++f) {
+        column_entries.clear();
+        for (int p = begin[f]; p < begin[f + 1]; ++p)
+            column_entries.emplace_back(rows[p], values[p]);
+        std::sort(column_entries.begin(), column_entries.end(),
+                  [](const auto& p, const auto& q) { return p.first < q.first; });
+        for (std::size_t k = 0; k < column_entries.size(); ++k) {
+            rows[begin[f] + k] = column_entries[k].first;
+            values[begin[f] + k] = column_entries[k].second;
+        }
+    }
+    // Edge i -> j of triangle s (opposite corner k): -sigma_s (u_i v_j - u_j v_i) = 2 h (v_j u_i
+    // - v_i u_j) with h = -sigma_s / 2, i.e. C_ji += h (and C_ij = -C_ji). With a pin among i
+    // and j, its terms go to the right-hand side instead.
     auto add_area_term = [&](Index s, int k) {
-        // Edge i -> j (opposite corner k): -sigma_t (u_i v_j - u_j v_i).
         const Index i = mesh.simplices(s, (k + 1) % 3), j = mesh.simplices(s, (k + 2) % 3);
         const double h = -0.5 * orientation(s);
-        couple(i, j, h);
-        couple(j, i, -h);
+        const Index fi = free_index[i], fj = free_index[j];
+        if (fi >= 0 && fj >= 0) {
+            const Index column = std::min(fi, fj), row = std::max(fi, fj);
+            const int* entry = std::lower_bound(rows + begin[column], rows + begin[column + 1],
+                                                static_cast<int>(row));
+            values[entry - rows] += Complex(0.0, row == fj ? h : -h);  // C_row,column
+            return;
+        }
+        if (fi >= 0) rhs[fi] += h * Complex(-x(j, 1), x(j, 0));  // -h v_j in r, h u_j in s
+        if (fj >= 0) rhs[fj] += h * Complex(x(i, 1), -x(i, 0));  // h v_i in r, -h u_i in s
     };
     for (const BoundaryFacet& f : topology.boundary_facets) add_area_term(f.simplex, f.opposite);
     if (planar) {
@@ -224,85 +266,12 @@ Eigen::MatrixXd lscm(const SimplicialMesh& mesh, const MeshTopology& topology) {
             add_area_term(f.simplex[1], f.opposite[1]);
         }
     }
-    std::sort(coupling.begin(), coupling.end(), [](const Coupling& p, const Coupling& q) {
-        return p.col != q.col ? p.col < q.col : p.row < q.row;
-    });
-    std::size_t merged = 0;  // couplings of one pair (from triangles on both sides) summed
-    for (const Coupling& c : coupling) {
-        if (merged > 0 && coupling[merged - 1].row == c.row && coupling[merged - 1].col == c.col) {
-            coupling[merged - 1].value += c.value;
-        } else {
-            coupling[merged++] = c;
-        }
-    }
-    coupling.resize(merged);
-
-    // Column counts: the diagonal, the neighbours of larger index, and (u columns) couplings.
-    const Index n = 2 * nf;
-    std::vector<int> begin(n + 1, 0);
-    for (Index f = 0; f < n; ++f) begin[f + 1] = 1;
-    for (const WeightedEdge& e : edges) {
-        const Index fa = free_index[e.a], fb = free_index[e.b];
-        if (fa < 0 || fb < 0) continue;
-        const Index column = std::min(fa, fb);
-        ++begin[column + 1];
-        ++begin[nf + column + 1];
-    }
-    for (const Coupling& c : coupling) ++begin[c.col + 1];
-    for (Index f = 0; f < n; ++f) begin[f + 1] += begin[f];
-    Eigen::SparseMatrix<double> lower(n, n);
-    lower.resizeNonZeros(begin[n]);
-    int* outer = lower.outerIndexPtr();
-    int* rows = lower.innerIndexPtr();
-    double* values = lower.valuePtr();
-    std::copy(begin.begin(), begin.end(), outer);
-    std::vector<int> cursor(begin.begin(), begin.end() - 1);
-    for (Index f = 0; f < n; ++f) {
-        rows[cursor[f]] = static_cast<int>(f);
-        values[cursor[f]++] = 0.0;
-    }
-    for (const WeightedEdge& e : edges) {
-        const Index fa = free_index[e.a], fb = free_index[e.b];
-        for (int c = 0; c < 2; ++c) {  // L_ab in the u block, then the v block
-            if (fa >= 0) values[begin[fa + c * nf]] += e.w;
-            if (fb >= 0) values[begin[fb + c * nf]] += e.w;
-            if (fa >= 0 && fb >= 0) {
-                const Index column = std::min(fa, fb) + c * nf;
-                rows[cursor[column]] = static_cast<int>(std::max(fa, fb) + c * nf);
-                values[cursor[column]++] = -e.w;
-            } else if (fa >= 0) {
-                rhs[fa + c * nf] += e.w * x(e.b, c);
-            } else if (fb >= 0) {
-                rhs[fb + c * nf] += e.w * x(e.a, c);
-            }
-        }
-    }
-    edges = {};
-    for (const Coupling& c : coupling) {
-        rows[cursor[c.col]] = static_cast<int>(c.row);
-        values[cursor[c.col]++] = c.value;
-    }
-    // Rows in order within each column (a few entries each).
-    std::vector<std::pair<int, double>> column_entries;
-    for (Index f = 0; f < n; ++f) {
-        column_entries.clear();
-        for (int p = begin[f]; p < begin[f + 1]; ++p)
-            column_entries.emplace_back(rows[p], values[p]);
-        std::sort(column_entries.begin(), column_entries.end());
-        for (std::size_t k = 0; k < column_entries.size(); ++k) {
-            rows[begin[f] + k] = column_entries[k].first;
-            values[begin[f] + k] = column_entries[k].second;
-        }
-    }
-    LinearSolver solver(LinearSolverType::kCholmodSupernodal,
-                        FillOrdering::kAmd);  // one factorization
-    solver.analyze(lower);
-    if (solver.factorize(lower) != FactorizationStatus::kSuccess) {
+    const std::optional<Eigen::VectorXcd> solution = solve_hermitian_positive_definite(lower, rhs);
+    if (!solution)
         throw InvalidArgumentError("lscm: the system is singular (is the mesh connected?)");
-    }
-    const Eigen::VectorXd solution = solver.solve(rhs);
     for (Index v = 0; v < nv; ++v) {
-        if (free_index[v] >= 0) x.row(v) << solution[free_index[v]], solution[free_index[v] + nf];
+        if (free_index[v] >= 0)
+            x.row(v) << (*solution)[free_index[v]].real(), (*solution)[free_index[v]].imag();
     }
     return x;
 }
