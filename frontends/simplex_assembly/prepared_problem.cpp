@@ -289,6 +289,7 @@ std::unique_ptr<PreparedProblem<D>> prepare_problem(const MappingProblem& input,
     validate_mesh(original, input.source);
     check_input(input, options, D);
     p->topology = mesh_topology(original, input.source);
+    if constexpr (D == 3) p->tet_edges = tet_edges(original, p->topology);
     for (Index h : input.handles) {
         if (!p->topology.used_vertex[h]) {
             throw InputError(input.source + ": handle vertex " + std::to_string(h) +

@@ -89,7 +89,8 @@ std::vector<Index> bad_simplices(const PreparedProblem<D>& p, const std::vector<
                 if (energy->beyond_exponent_cap(A[s])) rejected[s] = 1;
         });
     }
-    for (Index s : wrapped_simplices<D>(p.mesh, p.topology, p.frames, A)) rejected[s] = 1;
+    for (Index s : wrapped_simplices<D>(p.mesh, p.topology, p.frames, A, &p.tet_edges))
+        rejected[s] = 1;
     double largest = 0.0;
     for (double v : det_volume) {
         if (std::isfinite(v)) largest = std::max(largest, v);

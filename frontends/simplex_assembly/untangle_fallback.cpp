@@ -18,7 +18,8 @@ Index invalid_simplices(const PreparedProblem<D>& p, const Eigen::MatrixXd& posi
     const std::vector<Mat<D>> A = linear_parts<D>(p.mesh, p.frames, positions);
     const MapQuality q = map_quality<D>(A, p.frames.volume);
     return q.inverted + q.degenerate +
-           static_cast<Index>(wrapped_simplices<D>(p.mesh, p.topology, p.frames, A).size());
+           static_cast<Index>(
+               wrapped_simplices<D>(p.mesh, p.topology, p.frames, A, &p.tet_edges).size());
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "optim/errors.h"
 
@@ -85,9 +86,25 @@ std::array<double, 6> dihedral_angles(const Eigen::Matrix<double, 3, 4>& corners
 
 }  // namespace
 
+TetEdges tet_edges(const SimplicialMesh& mesh, const MeshTopology& topology) {
+    if (mesh.simplex_dimension() != 3) throw InvalidArgumentError("tet_edges: a tetrahedral mesh");
+    const EdgeLookup edge_index(topology);
+    TetEdges edges;
+    edges.on_boundary = boundary_edges(topology, edge_index);
+    edges.of_tet.resize(mesh.num_simplices());
+    tbb::parallel_for(Index(0), mesh.num_simplices(), [&](Index s) {
+        for (int i = 0; i < 6; ++i) {
+            edges.of_tet[s][i] =
+                edge_index(mesh.simplices(s, kTetEdge[i][0]), mesh.simplices(s, kTetEdge[i][1]));
+        }
+    });
+    return edges;
+}
+
 template <>
 std::vector<Index> wrapped_simplices<2>(const SimplicialMesh& mesh, const MeshTopology& topology,
-                                        const RestFrames<2>& frames, const std::vector<Mat<2>>& A) {
+                                        const RestFrames<2>& frames, const std::vector<Mat<2>>& A,
+                                        const TetEdges*) {
     const Index nv = mesh.num_vertices(), n = mesh.num_simplices();
     if (Index(A.size()) != n || frames.size() != n) {
         throw InvalidArgumentError("wrapped_simplices: one linear part and frame per triangle");
@@ -120,26 +137,26 @@ std::vector<Index> wrapped_simplices<2>(const SimplicialMesh& mesh, const MeshTo
 
 template <>
 std::vector<Index> wrapped_simplices<3>(const SimplicialMesh& mesh, const MeshTopology& topology,
-                                        const RestFrames<3>& frames, const std::vector<Mat<3>>& A) {
+                                        const RestFrames<3>& frames, const std::vector<Mat<3>>& A,
+                                        const TetEdges* edges) {
     const Index n = mesh.num_simplices();
     if (Index(A.size()) != n || frames.size() != n) {
         throw InvalidArgumentError("wrapped_simplices: one linear part and frame per tetrahedron");
     }
-    const EdgeLookup edge_index(topology);
-    const std::vector<unsigned char> on_boundary = boundary_edges(topology, edge_index);
-    // Per tetrahedron, in parallel: its six edges and their signed dihedral angles (an inverted
+    std::optional<TetEdges> computed;
+    if (edges == nullptr) edges = &computed.emplace(tet_edges(mesh, topology));
+    if (Index(edges->of_tet.size()) != n || edges->on_boundary.size() != topology.edges.size())
+        throw InvalidArgumentError("wrapped_simplices: the edges of another mesh");
+    const std::vector<std::array<Index, 6>>& edge_of = edges->of_tet;
+    const std::vector<unsigned char>& on_boundary = edges->on_boundary;
+    // Per tetrahedron, in parallel: the signed dihedral angles at its edges (an inverted
     // tetrahedron turns the other way around the edge); then summed per edge.
-    std::vector<std::array<Index, 6>> edge_of(n);
     std::vector<std::array<double, 6>> angle_of(n);
     std::vector<unsigned char> up(n);
     tbb::parallel_for(Index(0), n, [&](Index s) {
         up[s] = A[s].determinant() > 0.0;
         const std::array<double, 6> angles = dihedral_angles(A[s] * frames.corners[s]);
-        for (int i = 0; i < 6; ++i) {
-            edge_of[s][i] =
-                edge_index(mesh.simplices(s, kTetEdge[i][0]), mesh.simplices(s, kTetEdge[i][1]));
-            angle_of[s][i] = up[s] ? angles[i] : -angles[i];
-        }
+        for (int i = 0; i < 6; ++i) angle_of[s][i] = up[s] ? angles[i] : -angles[i];
     });
     const std::size_t ne = topology.edges.size();
     std::vector<double> sum(ne, 0.0);

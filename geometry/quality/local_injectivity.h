@@ -12,6 +12,7 @@
 // its image once). The checks assume no inverted or degenerate simplex (those are counted apart).
 
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 #include "geometry/mesh/mesh_topology.h"
@@ -29,15 +30,27 @@ std::vector<Index> branched_vertices(const SimplicialMesh& mesh, const MeshTopol
 std::vector<Index> branched_edges(const SimplicialMesh& mesh, const MeshTopology& topology,
                                   const Eigen::MatrixXd& positions);
 
+/// The edges of a tetrahedral mesh as wrapped_simplices<3> reads them: each tetrahedron's six
+/// edges (local vertex pairs 01 02 03 12 13 23) as indices into topology.edges, and per edge
+/// whether it lies on a boundary facet. The same for every map of the mesh: computed once where
+/// many maps are tested (an iteration's every iterate), it saves each test the edge searches.
+struct TetEdges {
+    std::vector<std::array<Index, 6>> of_tet;
+    std::vector<unsigned char> on_boundary;
+};
+TetEdges tet_edges(const SimplicialMesh& mesh, const MeshTopology& topology);
+
 /// The simplices around the wraps of a map given by its linear parts `A` (one per simplex of
 /// `mesh`, in the frames `frames`): the stars of the interior vertices (D = 2) or edges (D = 3)
 /// whose simplices are all positive in the map and whose angles sum to 2 pi k with k != 1
 /// (sorted). The map may have inverted simplices elsewhere; stars with one are not looked at.
 /// A map with wraps is not locally injective however its simplices are oriented, and no motion
 /// that keeps every simplex positive removes one: it is as far from valid as a map with those
-/// simplices inverted.
+/// simplices inverted. `edges` (D = 3; tet_edges() of this mesh), when given, is used instead of
+/// computing it.
 template <int D>
 std::vector<Index> wrapped_simplices(const SimplicialMesh& mesh, const MeshTopology& topology,
-                                     const RestFrames<D>& frames, const std::vector<Mat<D>>& A);
+                                     const RestFrames<D>& frames, const std::vector<Mat<D>>& A,
+                                     const TetEdges* edges = nullptr);
 
 }  // namespace sa

@@ -12,6 +12,7 @@
 #include "geometry/maps/vertex_recovery.h"
 #include "geometry/mesh/mesh_topology.h"
 #include "geometry/mesh/rest_frames.h"
+#include "geometry/quality/local_injectivity.h"
 
 namespace sa {
 
@@ -19,6 +20,8 @@ template <int D>
 struct PreparedProblem {
     const MappingProblem* input = nullptr;
     MeshTopology topology;
+    /// D = 3: each tetrahedron's edges, for the wrap test of every map tried (empty for D = 2).
+    TetEdges tet_edges;
     SimplicialMesh mesh;  ///< normalized rest shape
     RestFrames<D> frames;
     double scale = 1.0;             ///< normalized = (original - center) * scale
