@@ -1,5 +1,7 @@
 #include "frontends/simplex_assembly/detail/prepared_problem.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -480,12 +482,18 @@ void verify_result(const MappingProblem& input, const SimplexAssemblyOptions& op
     }
     verify_handles<D>(input, options, result.positions, v);
     v.bound = options.builtin_energy ? options.bound : kInfinity;
-    for (Index s = 0; s < original.num_simplices(); ++s) {
-        const MatrixInvariants<double> m = matrix_invariants<D>(out[s], false);
-        const double d =
-            m.J > 0.0 ? distortion<D>(options.distortion, m, options.gamma) : kInfinity;
-        v.max_distortion = std::max(v.max_distortion, d);
-    }
+    v.max_distortion = tbb::parallel_reduce(
+        tbb::blocked_range<Index>(0, original.num_simplices()), v.max_distortion,
+        [&](const tbb::blocked_range<Index>& r, double largest) {
+            for (Index s = r.begin(); s != r.end(); ++s) {
+                const MatrixInvariants<double> m = matrix_invariants<D>(out[s], false);
+                largest = std::max(
+                    largest,
+                    m.J > 0.0 ? distortion<D>(options.distortion, m, options.gamma) : kInfinity);
+            }
+            return largest;
+        },
+        [](double a, double b) { return std::max(a, b); });
     for (const auto& base : input.energies) {
         const auto& energy = static_cast<const SimplexTerm<D>&>(*base);
         if (energy.bounds_a_distortion())

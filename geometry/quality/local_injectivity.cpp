@@ -22,6 +22,13 @@ double rest_orientation(const SimplicialMesh& mesh, Index s) {
     return (b - a).cross(c - a).z() >= 0.0 ? 1.0 : -1.0;
 }
 
+/// The local index (0..D) of vertex v in simplex s, which contains it.
+int corner_of(const SimplicialMesh& mesh, Index s, Index v) {
+    int k = 0;
+    while (mesh.simplices(s, k) != v) ++k;
+    return k;
+}
+
 /// The whole number k of an angle sum 2 pi k, or -1 when the sum is not within a quarter turn of
 /// one (not a full wrap: a fan that does not close up).
 long turns(double sum) {
@@ -109,24 +116,27 @@ std::vector<Index> wrapped_simplices<2>(const SimplicialMesh& mesh, const MeshTo
     if (Index(A.size()) != n || frames.size() != n) {
         throw InvalidArgumentError("wrapped_simplices: one linear part and frame per triangle");
     }
-    std::vector<double> sum(nv, 0.0);
-    std::vector<unsigned char> positive(nv, 1);
-    for (Index s = 0; s < n; ++s) {
-        const Eigen::Matrix<double, 2, 3> c = A[s] * frames.corners[s];
-        const bool up = A[s].determinant() > 0.0;
-        for (int k = 0; k < 3; ++k) {
-            const Index v = mesh.simplices(s, k);
-            positive[v] &= up;
+    // Per interior vertex, in parallel: the angles of its triangles, summed in the order of
+    // topology.simplices_of_vertex (increasing triangle index).
+    std::vector<unsigned char> wraps(nv, 0);
+    tbb::parallel_for(Index(0), nv, [&](Index v) {
+        if (topology.boundary_vertex[v]) return;
+        double sum = 0.0;
+        for (Index p = topology.vertex_begin[v]; p < topology.vertex_begin[v + 1]; ++p) {
+            const Index s = topology.simplices_of_vertex[p];
+            if (!(A[s].determinant() > 0.0)) return;  // a star with an inverted triangle
+            const int k = corner_of(mesh, s, v);
+            const Eigen::Matrix<double, 2, 3> c = A[s] * frames.corners[s];
             const Eigen::Vector2d e1 = (c.col((k + 1) % 3) - c.col(k)).stableNormalized(),
                                   e2 = (c.col((k + 2) % 3) - c.col(k)).stableNormalized();
-            sum[v] += std::atan2(e1.x() * e2.y() - e1.y() * e2.x(), e1.dot(e2));
+            sum += std::atan2(e1.x() * e2.y() - e1.y() * e2.x(), e1.dot(e2));
         }
-    }
+        wraps[v] = turns(sum) != 1;
+    });
     std::vector<Index> wrapped;
     for (Index s = 0; s < n; ++s) {
         for (int k = 0; k < 3; ++k) {
-            const Index v = mesh.simplices(s, k);
-            if (!topology.boundary_vertex[v] && positive[v] && turns(sum[v]) != 1) {
+            if (wraps[mesh.simplices(s, k)]) {
                 wrapped.push_back(s);
                 break;
             }
@@ -185,12 +195,16 @@ std::vector<Index> branched_vertices(const SimplicialMesh& mesh, const MeshTopol
         positions.rows() != mesh.num_vertices()) {
         throw InvalidArgumentError("branched_vertices: a triangle mesh and #V x 2 positions");
     }
-    std::vector<double> sum(mesh.num_vertices(), 0.0);
-    for (Index s = 0; s < mesh.num_simplices(); ++s) {
-        const double orientation = rest_orientation(mesh, s);
-        for (int k = 0; k < 3; ++k) {
-            const Index v = mesh.simplices(s, k);
-            const Eigen::Vector2d p = positions.row(v).head<2>().transpose();
+    // Per interior vertex, in parallel, summed in the order of topology.simplices_of_vertex.
+    const Index nv = mesh.num_vertices();
+    std::vector<unsigned char> branched_at(nv, 0);
+    tbb::parallel_for(Index(0), nv, [&](Index v) {
+        if (!topology.used_vertex[v] || topology.boundary_vertex[v]) return;
+        const Eigen::Vector2d p = positions.row(v).head<2>().transpose();
+        double sum = 0.0;
+        for (Index q = topology.vertex_begin[v]; q < topology.vertex_begin[v + 1]; ++q) {
+            const Index s = topology.simplices_of_vertex[q];
+            const int k = corner_of(mesh, s, v);
             // Unit edges: the angle does not depend on their lengths, and products of raw
             // coordinates would overflow or underflow on meshes at 1e+-200.
             const Eigen::Vector2d e1 =
@@ -199,13 +213,14 @@ std::vector<Index> branched_vertices(const SimplicialMesh& mesh, const MeshTopol
             const Eigen::Vector2d e2 =
                 (positions.row(mesh.simplices(s, (k + 2) % 3)).head<2>().transpose() - p)
                     .stableNormalized();
-            sum[v] += orientation * std::atan2(e1.x() * e2.y() - e1.y() * e2.x(), e1.dot(e2));
+            sum += rest_orientation(mesh, s) *
+                   std::atan2(e1.x() * e2.y() - e1.y() * e2.x(), e1.dot(e2));
         }
-    }
+        branched_at[v] = turns(sum) != 1;
+    });
     std::vector<Index> branched;
-    for (Index v = 0; v < mesh.num_vertices(); ++v) {
-        if (topology.used_vertex[v] && !topology.boundary_vertex[v] && turns(sum[v]) != 1)
-            branched.push_back(v);
+    for (Index v = 0; v < nv; ++v) {
+        if (branched_at[v]) branched.push_back(v);
     }
     return branched;
 }
