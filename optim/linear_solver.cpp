@@ -237,9 +237,9 @@ struct LinearSolver::Impl {
             case LinearSolverType::kCholmodSupernodal:
                 quiet(supernodal.emplace().cholmod());
                 // A single factorization (kAmd) keeps CHOLMOD's default merging: as fast once,
-                // and a smaller factor (about 40% fewer stored entries on a planar LSCM system
-                // of a million unknowns), which matters where fresh memory is slow to touch
-                // (docs/measurements.md, "Planar parameterization at scale").
+                // and a smaller factor (about 40% fewer stored entries on the real form of a planar
+                // LSCM system of a million unknowns), which matters where fresh memory is slow to
+                // touch (docs/measurements.md, "Planar parameterization at scale").
                 if (ordering != FillOrdering::kAmd) relax_supernodes(supernodal->cholmod());
                 set_ordering(supernodal->cholmod(), ordering);
                 break;
