@@ -37,30 +37,26 @@ std::vector<Index> grow_rings(const SimplicialMesh& mesh, const MeshTopology& to
 std::vector<Index> fill_enclosed(const MeshTopology& topology, const std::vector<Index>& region) {
     const int d = topology.dimension;
     const Index n = static_cast<Index>(topology.neighbour.size() / (d + 1));
-    Index mesh_parts = 0;
-    const std::vector<Index> mesh_part = topology.simplex_components(&mesh_parts);
-    std::vector<unsigned char> part_has_boundary(mesh_parts, 0);
-    for (const BoundaryFacet& f : topology.boundary_facets)
-        part_has_boundary[mesh_part[f.simplex]] = 1;
-
-    // Components of the rest: -2 in the region, -1 not visited yet.
+    // Components of the rest: -2 in the region, -1 not visited yet, else the component's number.
+    // Only each component's size, seed and whether it reaches the boundary are kept: the rest is
+    // most of the mesh, and a small region usually leaves one component, the outside.
     std::vector<Index> rest(n, -1);
     for (Index s : region) rest[s] = -2;
     struct Component {
-        std::vector<Index> simplices;
+        Index seed = 0, size = 0;
         bool reaches_boundary = false;
     };
     std::vector<Component> components;
     std::vector<Index> stack;
     for (Index seed = 0; seed < n; ++seed) {
         if (rest[seed] != -1) continue;
-        Component c;
+        Component c{seed};
         rest[seed] = static_cast<Index>(components.size());
         stack.push_back(seed);
         while (!stack.empty()) {
             const Index s = stack.back();
             stack.pop_back();
-            c.simplices.push_back(s);
+            ++c.size;
             for (int k = 0; k <= d; ++k) {
                 const Index t = topology.neighbour_of(s, k);
                 if (t < 0) {
@@ -71,22 +67,35 @@ std::vector<Index> fill_enclosed(const MeshTopology& topology, const std::vector
                 }
             }
         }
-        components.push_back(std::move(c));
-    }
-    // In a part without boundary the largest component of the rest is the outside.
-    std::vector<Index> largest(mesh_parts, -1);
-    for (std::size_t c = 0; c < components.size(); ++c) {
-        const Index part = mesh_part[components[c].simplices.front()];
-        if (!part_has_boundary[part] &&
-            (largest[part] < 0 ||
-             components[c].simplices.size() > components[largest[part]].simplices.size()))
-            largest[part] = static_cast<Index>(c);
+        components.push_back(c);
     }
     std::vector<Index> filled = region;
-    for (std::size_t c = 0; c < components.size(); ++c) {
-        const Index part = mesh_part[components[c].simplices.front()];
-        if (components[c].reaches_boundary || largest[part] == Index(c)) continue;
-        filled.insert(filled.end(), components[c].simplices.begin(), components[c].simplices.end());
+    const bool all_reach_boundary =
+        std::all_of(components.begin(), components.end(),
+                    [](const Component& c) { return c.reaches_boundary; });
+    if (!all_reach_boundary) {
+        // Which part of the mesh each component lies in, and whether that part has a boundary:
+        // in a part without boundary the largest component of the rest is the outside.
+        Index mesh_parts = 0;
+        const std::vector<Index> mesh_part = topology.simplex_components(&mesh_parts);
+        std::vector<unsigned char> part_has_boundary(mesh_parts, 0);
+        for (const BoundaryFacet& f : topology.boundary_facets)
+            part_has_boundary[mesh_part[f.simplex]] = 1;
+        std::vector<Index> largest(mesh_parts, -1);
+        for (std::size_t c = 0; c < components.size(); ++c) {
+            const Index part = mesh_part[components[c].seed];
+            if (!part_has_boundary[part] &&
+                (largest[part] < 0 || components[c].size > components[largest[part]].size))
+                largest[part] = static_cast<Index>(c);
+        }
+        std::vector<unsigned char> enclosed(components.size(), 0);
+        for (std::size_t c = 0; c < components.size(); ++c) {
+            enclosed[c] = !components[c].reaches_boundary &&
+                          largest[mesh_part[components[c].seed]] != Index(c);
+        }
+        for (Index s = 0; s < n; ++s) {
+            if (rest[s] >= 0 && enclosed[rest[s]]) filled.push_back(s);
+        }
     }
     std::sort(filled.begin(), filled.end());
     return filled;
