@@ -231,23 +231,18 @@ std::vector<Index> branched_edges(const SimplicialMesh& mesh, const MeshTopology
         positions.rows() != mesh.num_vertices()) {
         throw InvalidArgumentError("branched_edges: a tetrahedral mesh and #V x 3 positions");
     }
-    const auto& edges = topology.edges;
-    const EdgeLookup edge_index(topology);
-    const std::vector<unsigned char> on_boundary = boundary_edges(topology, edge_index);
-    std::vector<double> sum(edges.size(), 0.0);
+    const TetEdges edges = tet_edges(mesh, topology);
+    std::vector<double> sum(topology.edges.size(), 0.0);
     for (Index s = 0; s < mesh.num_simplices(); ++s) {
         Eigen::Matrix<double, 3, 4> corners;
         for (int k = 0; k < 4; ++k)
             corners.col(k) = positions.row(mesh.simplices(s, k)).head<3>().transpose();
         const std::array<double, 6> angles = dihedral_angles(corners);
-        for (int i = 0; i < 6; ++i) {
-            sum[edge_index(mesh.simplices(s, kTetEdge[i][0]), mesh.simplices(s, kTetEdge[i][1]))] +=
-                angles[i];
-        }
+        for (int i = 0; i < 6; ++i) sum[edges.of_tet[s][i]] += angles[i];
     }
     std::vector<Index> branched;
-    for (std::size_t e = 0; e < edges.size(); ++e) {
-        if (!on_boundary[e] && turns(sum[e]) != 1) branched.push_back(static_cast<Index>(e));
+    for (std::size_t e = 0; e < sum.size(); ++e) {
+        if (!edges.on_boundary[e] && turns(sum[e]) != 1) branched.push_back(static_cast<Index>(e));
     }
     return branched;
 }
