@@ -225,9 +225,13 @@ void write_medit(const std::string& path, const Eigen::MatrixXd& positions,
                  const Eigen::MatrixXi& simplices) {
     constexpr const char* kFunction = "write_medit";
     io::check_positions(kFunction, positions);
-    io::check_simplices(kFunction, "simplices", simplices, positions.rows());
-    if (simplices.cols() == 4 && positions.cols() != 3)
-        throw InvalidArgumentError(std::string(kFunction) + ": tetrahedra need 3D positions");
+    const bool hexahedra = simplices.cols() == 8;
+    io::check_simplices(kFunction, hexahedra ? "hexahedra" : "simplices", simplices,
+                        positions.rows(), hexahedra ? 8 : 0);
+    if (simplices.cols() >= 4 && positions.cols() != 3) {
+        throw InvalidArgumentError(std::string(kFunction) + ": " +
+                                   (hexahedra ? "hexahedra" : "tetrahedra") + " need 3D positions");
+    }
     AtomicFile file(path);
     std::ostream& out = file.stream();
     out << "MeshVersionFormatted 2\nDimension " << positions.cols() << "\n\nVertices\n"
@@ -237,7 +241,10 @@ void write_medit(const std::string& path, const Eigen::MatrixXd& positions,
         out << " 0\n";
     }
     out << '\n'
-        << (simplices.cols() == 4 ? "Tetrahedra" : "Triangles") << '\n'
+        << (hexahedra               ? "Hexahedra"
+            : simplices.cols() == 4 ? "Tetrahedra"
+                                    : "Triangles")
+        << '\n'
         << simplices.rows() << '\n';
     for (Eigen::Index e = 0; e < simplices.rows(); ++e) {
         for (Eigen::Index c = 0; c < simplices.cols(); ++c) out << simplices(e, c) + 1 << ' ';

@@ -28,8 +28,9 @@ namespace sa {
 MeshFile read_medit(const std::string& path);
 
 /// Writes `MeshVersionFormatted 2`, `Dimension d` (d = positions.cols(), 2 or 3), `Vertices` with
-/// rows `x y [z] 0` (17 significant digits), `Triangles` (#S x 3) or `Tetrahedra` (#S x 4, 3D
-/// only) with 1-based rows `a b c [d] 0`, and `End`. Throws InvalidArgumentError on arrays of the
+/// rows `x y [z] 0` (17 significant digits), `Triangles` (#S x 3), `Tetrahedra` (#S x 4) or
+/// `Hexahedra` (#S x 8, geometry/mesh/hex_mesh.h's corner order; these two 3D only) with 1-based
+/// rows `a b c ... 0`, and `End`. Throws InvalidArgumentError on arrays of the
 /// wrong shape or an index out of range, and InputError when the file cannot be written (nothing
 /// is left at `path` then).
 void write_medit(const std::string& path, const Eigen::MatrixXd& positions,

@@ -52,7 +52,8 @@ MeshFile read_vtu(const std::string& path);
 void require_vtk_io();
 
 /// Writes a legacy ASCII .vtk unstructured grid: `positions` #V x 2 or #V x 3, `simplices`
-/// #S x 3 (VTK_TRIANGLE) or #S x 4 (VTK_TETRA, 3D only), `point_data` arrays of #V rows and
+/// #S x 3 (VTK_TRIANGLE), #S x 4 (VTK_TETRA) or #S x 8 (VTK_HEXAHEDRON, in
+/// geometry/mesh/hex_mesh.h's corner order; these two 3D only), `point_data` arrays of #V rows and
 /// `cell_data` arrays of #S rows (non-empty, distinct names). Throws InvalidArgumentError on
 /// arrays of the wrong shape, an index out of range, a non-integer value in an integer array or a
 /// bad array name, and InputError when the file cannot be written (nothing is left at `path`

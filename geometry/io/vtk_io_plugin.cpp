@@ -60,14 +60,23 @@ MeshFile to_mesh_file(const std::string& path, vtkDataSet* data) {
     return io::mesh_from_vtk_cells(path, points, cells);
 }
 
+// The VTK cell type of rows of `columns` vertex indices: 3, 4 or 8 (checked).
+int cell_type(Eigen::Index columns) {
+    return columns == 8 ? VTK_HEXAHEDRON : columns == 4 ? VTK_TETRA : VTK_TRIANGLE;
+}
+
 // Checks a writer's arguments; throws InvalidArgumentError naming `function`.
 void check_arguments(const char* function, const Eigen::MatrixXd& positions,
                      const Eigen::MatrixXi& simplices, const std::vector<DataArray>& point_data,
                      const std::vector<DataArray>& cell_data) {
     io::check_positions(function, positions);
-    io::check_simplices(function, "simplices", simplices, positions.rows());
-    if (simplices.cols() == 4 && positions.cols() != 3)
-        throw InvalidArgumentError(std::string(function) + ": tetrahedra need 3D positions");
+    const bool hexahedra = simplices.cols() == 8;
+    io::check_simplices(function, hexahedra ? "hexahedra" : "simplices", simplices,
+                        positions.rows(), hexahedra ? 8 : 0);
+    if (simplices.cols() >= 4 && positions.cols() != 3) {
+        throw InvalidArgumentError(std::string(function) + ": " +
+                                   (hexahedra ? "hexahedra" : "tetrahedra") + " need 3D positions");
+    }
     auto check_arrays = [&](const std::vector<DataArray>& arrays, const char* kind,
                             Eigen::Index rows) {
         std::set<std::string> names;
@@ -120,12 +129,12 @@ vtkSmartPointer<vtkUnstructuredGrid> make_grid(const Eigen::MatrixXd& positions,
     grid->SetPoints(points);
     auto cells = vtkSmartPointer<vtkCellArray>::New();
     cells->AllocateExact(simplices.rows(), simplices.size());
-    vtkIdType ids[4];
+    vtkIdType ids[8];
     for (Eigen::Index e = 0; e < simplices.rows(); ++e) {
         for (Eigen::Index c = 0; c < simplices.cols(); ++c) ids[c] = simplices(e, c);
         cells->InsertNextCell(simplices.cols(), ids);
     }
-    grid->SetCells(simplices.cols() == 4 ? VTK_TETRA : VTK_TRIANGLE, cells);
+    grid->SetCells(cell_type(simplices.cols()), cells);
 
     auto add_arrays = [](const std::vector<DataArray>& arrays, vtkDataSetAttributes* target) {
         for (const DataArray& array : arrays) {
@@ -262,7 +271,7 @@ void write_vtk_file(const std::string& path, const Eigen::MatrixXd& positions,
         out << '\n';
     }
     out << "CELL_TYPES " << m << '\n';
-    const int type = k == 4 ? VTK_TETRA : VTK_TRIANGLE;
+    const int type = cell_type(k);
     for (Eigen::Index e = 0; e < m; ++e) out << type << '\n';
     write_legacy_arrays(out, "POINT_DATA", n, point_data);
     write_legacy_arrays(out, "CELL_DATA", m, cell_data);

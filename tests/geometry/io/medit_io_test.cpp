@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "io_test_util.h"
 
 namespace sa {
@@ -87,6 +89,31 @@ TEST(MeditIo, RoundTrip) {
     const MeshFile flat = read_medit(path);
     EXPECT_EQ(flat.mesh.vertices, positions.leftCols(2));
     EXPECT_EQ(flat.mesh.simplices, triangles);
+}
+
+// Hexahedra (geometry/mesh/hex_mesh.h) are written in their own section, which the reader of
+// simplicial meshes skips by its row size with a warning.
+TEST(MeditIo, HexahedraAreWrittenAndSkippedOnReading) {
+    TempFolder folder;
+    Eigen::MatrixXd positions(8, 3);
+    positions << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1;
+    Eigen::MatrixXi hexes(1, 8);
+    hexes << 0, 1, 2, 3, 4, 5, 6, 7;
+    const std::string path = folder.path("hex.mesh");
+    write_medit(path, positions, hexes);
+    std::ifstream in(path);
+    const std::string text((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_NE(text.find("Hexahedra\n1\n1 2 3 4 5 6 7 8 0\n"), std::string::npos) << text;
+    const MeshFile file = read_medit(path);
+    EXPECT_EQ(file.mesh.vertices, positions);
+    ASSERT_EQ(file.warnings.size(), 1u);
+    EXPECT_NE(file.warnings[0].find("skipped 1 Hexahedra"), std::string::npos) << file.warnings[0];
+    EXPECT_TRUE(throws_invalid_argument(
+        [&] { write_medit(folder.path("x.mesh"), positions.leftCols(2), hexes); }, "3D"));
+    hexes(0, 7) = 8;
+    EXPECT_TRUE(
+        throws_invalid_argument([&] { write_medit(folder.path("x.mesh"), positions, hexes); },
+                                "hexahedra row 0 refers to vertex 8"));
 }
 
 TEST(MeditIo, MalformedFilesNameTheFileAndLine) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -369,6 +371,27 @@ TEST(VtkIo, ReadsBinaryLegacyFilesInBothCellLayouts) {
     const std::string garbage = head + "\x01\x02" + types;
     EXPECT_TRUE(throws_input_error(read_vtk_in(folder, "garbage.vtk", garbage),
                                    {"unknown section '\\x01\\x02CELL_TYPES'"}));
+}
+
+// Hexahedra are written as VTK_HEXAHEDRON (12) cells with their cell data; the reader, which
+// reads simplices, names the cell type it does not read.
+TEST(VtkIo, HexahedraAreWrittenAsVtkHexahedron) {
+    TempFolder folder;
+    Eigen::MatrixXd positions(8, 3);
+    positions << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1;
+    Eigen::MatrixXi hexes(1, 8);
+    hexes << 0, 1, 2, 3, 4, 5, 6, 7;
+    const std::string path = folder.path("hex.vtk");
+    write_vtk(path, positions, hexes, {}, {{"quality", Eigen::MatrixXd::Ones(1, 1)}});
+    std::ifstream in(path);
+    const std::string text((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_NE(text.find("CELLS 1 9\n8 0 1 2 3 4 5 6 7\nCELL_TYPES 1\n12\n"), std::string::npos)
+        << text;
+    EXPECT_TRUE(throws_input_error([&] { read_vtk(path); }, {"cell 0 has type 12"}));
+    write_vtu(folder.path("hex.vtu"), positions, hexes);
+    EXPECT_TRUE(throws_invalid_argument(
+        [&] { write_vtu(folder.path("x.vtu"), positions.leftCols(2), hexes); },
+        "hexahedra need 3D positions"));
 }
 
 TEST(VtkIo, WritersCheckArgumentsAndWriteAtomically) {
