@@ -32,6 +32,16 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
                    const PolycubePluginOptions& options)
         : AssemblyPlugin<3>("polycube"), p_(prepared), weight_(angle_weight), options_(options) {
         build_planes();
+        const std::vector<double>& held = options_.plane_coordinates;
+        if (!held.empty() && held.size() != plane_axis_.size()) {
+            throw InvalidArgumentError("polycube: " + std::to_string(held.size()) +
+                                       " plane coordinates for " +
+                                       std::to_string(plane_axis_.size()) + " planes");
+        }
+        for (const double c : held) {
+            if (!std::isfinite(c))
+                throw InvalidArgumentError("polycube: a plane coordinate is not finite");
+        }
     }
 
     void add_assembly_terms(SimplexAssemblyEngine<3>& engine,
@@ -83,8 +93,10 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
             sum[plane] += positions(v, plane_axis_[plane]);
             ++count[plane];
         }
-        for (const auto& [v, plane] : members_)
-            positions(v, plane_axis_[plane]) = sum[plane] / double(count[plane]);
+        for (const auto& [v, plane] : members_) {
+            positions(v, plane_axis_[plane]) =
+                planes_held() ? held_coordinate(plane, stage) : sum[plane] / double(count[plane]);
+        }
         if (!positions.allFinite()) return false;
         // Flattening the charts onto their planes folds tetrahedra along the boundary where the
         // assembly has not made the charts planar yet (S3: 25 of 43,224 at the first hand-over
@@ -167,6 +179,9 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
         u.shared_coordinates = shared_coordinates(positions, PluginStage<3>{});
         u.fixed_coordinates.assign(u.shared_coordinates.size(), 0);
         const std::vector<Index> leader = plane_leaders();
+        if (planes_held()) {
+            for (const Index coordinate : leader) u.fixed_coordinates[coordinate] = 1;
+        }
         for (const auto& [low, high] : outer_planes(positions)) {
             if (low < 0) continue;
             u.fixed_coordinates[leader[low]] = u.fixed_coordinates[leader[high]] = 1;
@@ -213,6 +228,11 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
         // values of the start, which energy() checked below their limits before the hand-over.
         const Eigen::MatrixXd positions = engine.positions(engine.problem().variables());
         const std::vector<Index> leader = plane_leaders();
+        if (planes_held()) {
+            for (const Index coordinate : leader)
+                engine.problem().set_fixed(engine.coordinate_variable(coordinate));
+            return;
+        }
         const auto outer = outer_planes(positions);
         int widest = -1;
         double widest_extent = -1.0;
@@ -247,6 +267,17 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
     bool removes_rigid_motion() const override { return true; }
 
   private:
+    /// Whether every plane stays at PolycubePluginOptions::plane_coordinates.
+    bool planes_held() const { return !options_.plane_coordinates.empty(); }
+
+    /// Where `plane` is held, in `stage`'s coordinates (the driver's are normalized).
+    double held_coordinate(int plane, const PluginStage<3>& stage) const {
+        const double c = options_.plane_coordinates[plane];
+        const int axis = plane_axis_[plane];
+        return stage.map_center.size() == 3 ? (c - stage.map_center[axis]) * stage.scale
+                                            : c * stage.scale;
+    }
+
     /// Per plane: the coordinate D v + axis of its first vertex, which its other vertices share.
     std::vector<Index> plane_leaders() const {
         std::vector<Index> leader(plane_axis_.size(), -1);
@@ -310,10 +341,12 @@ class PolycubePlugin final : public AssemblyPlugin<3> {
             const int axis = label_axis(p_.labels[b]);
             for (int k = 0; k < 3; ++k) {
                 const int plane = plane_of_vertex_[p_.boundary.triangles(b, k)][axis];
-                rows[b].rows.rhs[k] = sum[plane] / double(count[plane]);
+                rows[b].rows.rhs[k] = planes_held() ? held_coordinate(plane, stage)
+                                                    : sum[plane] / double(count[plane]);
             }
         }
-        engine.add_linear_constraints<12, 3>("polycube planes at their start", rows);
+        engine.add_linear_constraints<12, 3>(
+            planes_held() ? "polycube planes where held" : "polycube planes at their start", rows);
     }
 
     /// Planes (frontends/polycube/polycube_planes.h), and each boundary vertex's planes.
@@ -358,8 +391,10 @@ std::shared_ptr<const AssemblyPlugin<3>> polycube_plugin(const PreparedPolycube&
     return std::make_shared<const PolycubePlugin>(prepared, angle_weight, options);
 }
 
-PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSolveOptions& options,
-                             const Logger& logger) {
+namespace {
+
+/// Checks `options` against `prepared` before any work (see solve_polycube()).
+void check_solve_options(const PreparedPolycube& prepared, const PolycubeSolveOptions& options) {
     if (options.optimal_bound && std::isfinite(options.bound)) {
         throw InvalidArgumentError("polycube: bound = " + std::to_string(options.bound) +
                                    " with the optimal bound: give one or the other");
@@ -381,39 +416,32 @@ PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSol
                               number(prepared.angle_bound.bound) + ": " +
                               prepared.angle_bound.worst.front().describe());
     }
-    PolycubeSolve out;
-    Stopwatch stage;
-    const CubeCover cover = cube_cover_map(prepared.mesh, prepared.boundary, prepared.charts);
-    out.start = cover.positions;
-    const RestFrames<3> frames = rest_frames<3>(prepared.mesh);
-    out.start_quality =
-        map_quality<3>(linear_parts<3>(prepared.mesh, frames, out.start), frames.volume);
-    out.cube_cover_seconds = stage.lap();
-    log_line(logger, "cube-cover start: " + std::to_string(out.start_quality.inverted) +
-                         " inverted and " + std::to_string(out.start_quality.degenerate) +
-                         " degenerate of " + std::to_string(prepared.mesh.num_simplices()) +
-                         " tetrahedra; of its " + std::to_string(cover.edge_orders) +
-                         " PolyCube edges, " + std::to_string(cover.lengthened_edges) +
-                         " kept in rest order by tying their corners' planes, " +
-                         std::to_string(cover.unordered_edges) + " still out of order, " +
-                         std::to_string(cover.collapsed_edges) + " with both corners on one plane");
+}
 
+/// Steps 2 to 4 of polycube_solve.h from out.start (set, with its quality and
+/// out.cube_cover_seconds), the planes free or held at `plane_coordinates`.
+void solve_from_start(const PreparedPolycube& prepared, const PolycubeSolveOptions& options,
+                      const std::vector<double>& plane_coordinates, const RestFrames<3>& frames,
+                      PolycubeSolve& out, const Logger& logger) {
+    Stopwatch stage;
     PolycubePluginOptions plugin_options;
     plugin_options.max_time = options.max_time - out.cube_cover_seconds;
     plugin_options.threads = options.threads;
     plugin_options.untangle_iterations = options.untangle_iterations;
     plugin_options.logger = logger;
+    plugin_options.plane_coordinates = plane_coordinates;
     polycube_plugin(prepared, options.angle_weight, plugin_options);  // checks the options
     const auto plugin =
         std::make_shared<const PolycubePlugin>(prepared, options.angle_weight, plugin_options);
 
-    // A folded cube cover is untangled on its planes first: the driver's disassembly then starts
+    // A folded start is untangled on its planes first: the driver's disassembly then starts
     // from a valid map, and so does the recovered mesh of its first hand-over test, up to the
     // few tetrahedra that the plane projection folds again.
     MappingProblem problem;
     problem.mesh = prepared.mesh;
     problem.initial = out.start;
     problem.source = "polycube";
+    if (!plane_coordinates.empty()) plugin->project(problem.initial, PluginStage<3>{});
     plugin->untangle_on_planes(problem.initial, prepared.mesh, frames, nullptr,
                                &out.start_untangled);
     out.untangle_seconds = stage.lap();
@@ -425,6 +453,16 @@ PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSol
         std::max(options.max_time - out.cube_cover_seconds - out.untangle_seconds, 1e-3);
     o.num_threads = options.threads;
     o.mode = SolveMode::kFull;
+    if (!plane_coordinates.empty()) {
+        // Planes held where given: a start that is inversion-free on them is already a PolyCube
+        // of those planes, and the vertex stage alone (the descent mode) improves it. The
+        // assembly would only fold it again: its recovered meshes are projected onto planes
+        // that cannot follow it (robustPolycube M1_tet: 1,748 folded tetrahedra after the first
+        // iterations, from a start with none).
+        const MapQuality q =
+            map_quality<3>(linear_parts<3>(prepared.mesh, frames, problem.initial), frames.volume);
+        if (q.inverted + q.degenerate == 0) o.mode = SolveMode::kDescent;
+    }
     // f-SA: the assembly holds every boundary vertex on its plane at the start's offset
     // (add_plane_offsets), which needs each boundary tetrahedron's translation. Without the
     // offsets the assembly shrank the map (with r-SA the median simplex scale could fall tenfold,
@@ -432,8 +470,8 @@ PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSol
     // assembled and unverified (docs/measurements.md, PolyCube).
     o.variant = Variant::kFull;
     log_line(logger, "polycube: " + std::to_string(independent_loops(prepared.boundary)) +
-                         " independent loops (handles) in the solid; f-SA, the planes held at "
-                         "the start's offsets");
+                         " independent loops (handles) in the solid; f-SA, the planes held " +
+                         (plane_coordinates.empty() ? "at the start's offsets" : "where given"));
     o.untangle_fallback = false;
     o.handover_ratio = options.handover_ratio;
     SimplexAssemblyObserver observer;
@@ -476,6 +514,55 @@ PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSol
     if (!out.rounds.empty()) message << "; " << out.rounds.size() << " optimal-bound rounds";
     message << ". " << out.solve.message;
     out.message = message.str();
+}
+
+}  // namespace
+
+PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSolveOptions& options,
+                             const Logger& logger) {
+    check_solve_options(prepared, options);
+    PolycubeSolve out;
+    Stopwatch stage;
+    const CubeCover cover = cube_cover_map(prepared.mesh, prepared.boundary, prepared.charts);
+    out.start = cover.positions;
+    const RestFrames<3> frames = rest_frames<3>(prepared.mesh);
+    out.start_quality =
+        map_quality<3>(linear_parts<3>(prepared.mesh, frames, out.start), frames.volume);
+    out.cube_cover_seconds = stage.lap();
+    log_line(logger, "cube-cover start: " + std::to_string(out.start_quality.inverted) +
+                         " inverted and " + std::to_string(out.start_quality.degenerate) +
+                         " degenerate of " + std::to_string(prepared.mesh.num_simplices()) +
+                         " tetrahedra; of its " + std::to_string(cover.edge_orders) +
+                         " PolyCube edges, " + std::to_string(cover.lengthened_edges) +
+                         " kept in rest order by tying their corners' planes, " +
+                         std::to_string(cover.unordered_edges) + " still out of order, " +
+                         std::to_string(cover.collapsed_edges) + " with both corners on one plane");
+
+    solve_from_start(prepared, options, {}, frames, out, logger);
+    return out;
+}
+
+PolycubeSolve solve_polycube_on_planes(const PreparedPolycube& prepared,
+                                       const Eigen::MatrixXd& start,
+                                       const std::vector<double>& plane_coordinates,
+                                       const PolycubeSolveOptions& options, const Logger& logger) {
+    check_solve_options(prepared, options);
+    if (options.optimal_bound) {
+        throw InvalidArgumentError("polycube: the optimal bound is not taken on held planes");
+    }
+    if (start.rows() != prepared.mesh.num_vertices() || start.cols() != 3 || !start.allFinite()) {
+        throw InvalidArgumentError(
+            "polycube: the start must be #V x 3 = " + std::to_string(prepared.mesh.num_vertices()) +
+            " x 3 finite positions");
+    }
+    if (plane_coordinates.empty())
+        throw InvalidArgumentError("polycube: no plane coordinates to hold the planes at");
+    PolycubeSolve out;
+    out.start = start;
+    const RestFrames<3> frames = rest_frames<3>(prepared.mesh);
+    out.start_quality =
+        map_quality<3>(linear_parts<3>(prepared.mesh, frames, start), frames.volume);
+    solve_from_start(prepared, options, plane_coordinates, frames, out, logger);
     return out;
 }
 

@@ -97,6 +97,11 @@ struct PolycubePluginOptions {
     double max_time = kInfinity;    ///< seconds from the plugin's creation; none after
     int threads = 0;                ///< 0 = all cores
     Logger logger;                  ///< one line per untangling
+    /// Per plane (polycube_planes() numbering): where it is held, in the map's units. Empty: the
+    /// planes move (as described above). Given: every plane stays at its coordinate, in the
+    /// assembly (the offsets' right-hand sides), the projection, the untangling and the vertex
+    /// stage; the quantized PolyCube of a hex mesh (frontends/hex/plane_quantization.h).
+    std::vector<double> plane_coordinates;
 };
 
 /// The plugin of `prepared`'s PolyCube terms (see above). It refers to `prepared`, which must
@@ -112,5 +117,16 @@ std::shared_ptr<const AssemblyPlugin<3>> polycube_plugin(const PreparedPolycube&
 /// result.
 PolycubeSolve solve_polycube(const PreparedPolycube& prepared, const PolycubeSolveOptions& options,
                              const Logger& logger = {});
+
+/// The same solve (steps 2 and 4; `options.optimal_bound` must be false) with every plane held at
+/// `plane_coordinates` (per plane, polycube_planes() numbering, in the map's units), from `start`
+/// (#V x 3, a map of prepared.mesh: a PolyCube whose planes were moved there, e.g. by
+/// quantization, folded or not): its boundary vertices are put on their planes and the folds
+/// untangled on them first. PolycubeSolve::start is `start`; the cube-cover time is 0.
+PolycubeSolve solve_polycube_on_planes(const PreparedPolycube& prepared,
+                                       const Eigen::MatrixXd& start,
+                                       const std::vector<double>& plane_coordinates,
+                                       const PolycubeSolveOptions& options,
+                                       const Logger& logger = {});
 
 }  // namespace sa

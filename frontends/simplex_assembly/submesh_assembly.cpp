@@ -116,14 +116,15 @@ SimplexAssemblyResult solve_region(const MappingProblem& input, const MeshTopolo
 template <int D>
 SolveMode choose_mode(const PreparedProblem<D>& p, const SimplexAssemblyOptions& options) {
     if (!p.input->plugins.empty()) {
-        // A plugin's terms cannot be restricted to a region yet (assembly_plugin.h), nor its
-        // constraints imposed on a start without the assembly's hand-over.
-        if (options.mode == SolveMode::kSubmesh || options.mode == SolveMode::kDescent) {
+        // A plugin's terms cannot be restricted to a region yet (assembly_plugin.h). The descent
+        // is the vertex stage alone, which projects its start onto the plugin's constraints
+        // (vertex_stage.h) as it does a hand-over.
+        if (options.mode == SolveMode::kSubmesh) {
             throw InvalidArgumentError("plugin '" + p.input->plugins.front()->name() +
-                                       "': problems with plugins run in the full mode only "
-                                       "(mode full or auto)");
+                                       "': problems with plugins run in the full or the descent "
+                                       "mode (mode full, descent or auto)");
         }
-        return SolveMode::kFull;
+        return options.mode == SolveMode::kDescent ? SolveMode::kDescent : SolveMode::kFull;
     }
     if (options.mode == SolveMode::kDescent) return SolveMode::kDescent;
     if (p.input->boundary_injective) {

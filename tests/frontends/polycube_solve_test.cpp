@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "frontends/polycube/cube_cover.h"
+#include "frontends/polycube/polycube_planes.h"
 #include "geometry/mesh/mesh_generators.h"
 #include "geometry/mesh/rest_frames.h"
 #include "geometry/quality/map_quality.h"
@@ -110,6 +111,17 @@ TEST(PolycubeSolve, TheDriverCallsAPluginInEveryStageAndItsConstraintHoldsExactl
     } catch (const InvalidArgumentError& e) {
         EXPECT_NE(std::string(e.what()).find("top on a plane"), std::string::npos) << e.what();
     }
+    // The descent mode runs the vertex stage alone, which projects its start onto the plugin's
+    // plane and calls the plugin there.
+    SimplexAssemblyOptions descent;
+    descent.mode = SolveMode::kDescent;
+    const int vertex_calls = plugin->vertex_calls.load();
+    MappingProblem valid = p;
+    valid.initial = p.mesh.vertices;
+    const SimplexAssemblyResult d = run_simplex_assembly(valid, descent);
+    EXPECT_EQ(d.mode, SolveMode::kDescent);
+    EXPECT_TRUE(d.success) << d.message;
+    EXPECT_GT(plugin->vertex_calls.load(), vertex_calls);
     // A plugin of the wrong dimension is rejected.
     MappingProblem flat;
     flat.mesh = grid_triangles(2, 2);
@@ -234,6 +246,47 @@ PluginStage<3> vertex_stage(const PreparedPolycube& prepared, const RestFrames<3
 // boundary vertex is held on its plane at the start's offset. Planarity alone (on A) would give
 // the shrunk map E~ = 0 as well, and the assembly shrank cup's map (docs/measurements.md,
 // PolyCube).
+// Planes held where given (the quantized PolyCube of a hex mesh): from a verified map scaled by
+// 1.5 with every plane held at 1.5 times its coordinate plus 0.25 on one plane of x, the solve
+// ends verified with each plane's vertices exactly there; an inversion-free start goes to the
+// vertex stage alone.
+TEST(PolycubeSolve, PlanesHeldWhereGivenStayThere) {
+    const PreparedPolycube prepared =
+        prepared_shape(testing::bent(testing::voxel_tetrahedra(testing::l_shape(), 2), 0.1));
+    const PolycubeSolve free = solve_polycube(prepared, {});
+    ASSERT_TRUE(free.success) << free.message;
+    const PolycubePlanes planes =
+        polycube_planes(prepared.boundary, prepared.charts, prepared.mesh.num_vertices());
+    std::vector<double> held(planes.size(), 0.0);
+    for (Index v = 0; v < prepared.mesh.num_vertices(); ++v)
+        for (int a = 0; a < 3; ++a)
+            if (planes.plane_of_vertex[v][a] >= 0)
+                held[planes.plane_of_vertex[v][a]] = 1.5 * free.positions(v, a);
+    // The x plane in the middle of the L moves by a sixth of the arm's width.
+    int middle = -1;
+    for (int p = 0; p < planes.size(); ++p) {
+        if (planes.axis[p] != 0) continue;
+        int below = 0, above = 0;
+        for (int q = 0; q < planes.size(); ++q) {
+            if (planes.axis[q] != 0 || q == p) continue;
+            (held[q] < held[p] ? below : above) += 1;
+        }
+        if (below > 0 && above > 0) middle = p;
+    }
+    ASSERT_GE(middle, 0);
+    held[middle] += 0.25;
+    const PolycubeSolve r = solve_polycube_on_planes(prepared, free.positions * 1.5, held, {});
+    ASSERT_TRUE(r.success) << r.message;
+    EXPECT_EQ(r.solve.mode, SolveMode::kDescent);
+    for (Index v = 0; v < prepared.mesh.num_vertices(); ++v)
+        for (int a = 0; a < 3; ++a)
+            if (planes.plane_of_vertex[v][a] >= 0)
+                EXPECT_NEAR(r.positions(v, a), held[planes.plane_of_vertex[v][a]], 1e-12);
+    EXPECT_THROW(solve_polycube_on_planes(prepared, free.positions, {1.0}, {}),
+                 InvalidArgumentError);
+    EXPECT_THROW(solve_polycube_on_planes(prepared, free.positions, {}, {}), InvalidArgumentError);
+}
+
 TEST(PolycubeSolve, TheAssemblyHoldsThePlanesAtTheStartOffsets) {
     const PreparedPolycube prepared =
         prepared_shape(testing::bent(testing::voxel_tetrahedra(testing::l_shape(), 2), 0.15));
