@@ -405,6 +405,43 @@ CLI::App* add_polycube_command(CLI::App& app, PolycubeArguments& a) {
     return polycube;
 }
 
+CLI::App* add_hex_command(CLI::App& app, HexArguments& a) {
+    CLI::App* hex =
+        app.add_subcommand("hex", "hexahedral mesh of a tetrahedral mesh through its PolyCube map");
+    PolycubeArguments& p = a.polycube;
+    hex->add_option("--mesh", p.mesh, "the tetrahedral mesh: .mesh .vtk .vtu .node/.ele")
+        ->required();
+    hex->add_option("--labels", p.labels,
+                    "the boundary's labels, as for `sa polycube`; computed when absent");
+    hex->add_option("--label-surface", p.label_surface,
+                    "the boundary surface (.obj) that per-triangle --labels refer to");
+    hex->add_flag("--keep-orientation", p.keep_orientation,
+                  "computed labels in the input's own axes (as for `sa polycube`)");
+    hex->add_option("--hexes", a.hexes,
+                    "the number of hexes aimed at (default " + std::to_string(kDefaultHexes) +
+                        ": a first look; the grid follows the PolyCube, so the count is near)");
+    hex->add_option("--hex-size", a.hex_size,
+                    "the hexes' edge length in the input's units, instead of --hexes");
+    hex->add_option("--padding", a.padding,
+                    "depth of the layer of hexes added along the boundary when a hex corner "
+                    "there is inverted or flat, a fraction of its edge length; 0: never")
+        ->capture_default_str();
+    hex->add_option("--bound", p.bound,
+                    "bound K on the PolyCube's conformal distortion, > 1 or inf")
+        ->capture_default_str();
+    hex->add_option("--out", a.out, "the hex mesh (.mesh, Medit Hexahedra)")->required();
+    hex->add_option("--polycube", a.polycube_out,
+                    "the PolyCube on the grid (.mesh, grid units), with P.rest.mesh and P.flags");
+    hex->add_option("--vtu", a.vtu, "the hex mesh with per-hex scaled Jacobian (.vtu or .vtk)");
+    add_picture_options(*hex, a.png, a.no_png,
+                        "the hex mesh cut in half, coloured by scaled Jacobian");
+    hex->add_option("--report", a.report, "JSON report");
+    add_max_time_option(*hex, p.max_time, "both PolyCube solves");
+    add_threads_option(*hex, p.threads);
+    add_force_and_quiet(*hex, p.force, p.quiet);
+    return hex;
+}
+
 CLI::App* add_deform_command(CLI::App& app, DeformArguments& a) {
     CLI::App* deform = app.add_subcommand(
         "deform",
@@ -489,6 +526,9 @@ void parse_command_line(const std::vector<std::string>& words, SeamlessArguments
 }
 void parse_command_line(const std::vector<std::string>& words, PolycubeArguments& arguments) {
     parse_words(add_polycube_command, words, arguments);
+}
+void parse_command_line(const std::vector<std::string>& words, HexArguments& arguments) {
+    parse_words(add_hex_command, words, arguments);
 }
 void parse_command_line(const std::vector<std::string>& words, DeformArguments& arguments) {
     parse_words(add_deform_command, words, arguments);

@@ -14,6 +14,7 @@
 #include "frontends/cli/demo_command.h"
 #include "frontends/cli/map_command.h"
 #include "frontends/cli/param_command.h"
+#include "frontends/cli/hex_command.h"
 #include "frontends/cli/polycube_command.h"
 #include "frontends/cli/seamless_command.h"
 #include "optim/errors.h"
@@ -30,6 +31,7 @@ CLI::App* add_param_command(CLI::App& app, ParamArguments& arguments);
 CLI::App* add_subdivide_command(CLI::App& app, SubdivideArguments& arguments);
 CLI::App* add_seamless_command(CLI::App& app, SeamlessArguments& arguments);
 CLI::App* add_polycube_command(CLI::App& app, PolycubeArguments& arguments);
+CLI::App* add_hex_command(CLI::App& app, HexArguments& arguments);
 CLI::App* add_deform_command(CLI::App& app, DeformArguments& arguments);
 
 /// A command line that does not parse; what() is CLI11's message, as `sa` prints it.
@@ -44,6 +46,7 @@ void parse_command_line(const std::vector<std::string>& words, MapArguments& arg
 void parse_command_line(const std::vector<std::string>& words, ParamArguments& arguments);
 void parse_command_line(const std::vector<std::string>& words, SeamlessArguments& arguments);
 void parse_command_line(const std::vector<std::string>& words, PolycubeArguments& arguments);
+void parse_command_line(const std::vector<std::string>& words, HexArguments& arguments);
 void parse_command_line(const std::vector<std::string>& words, DeformArguments& arguments);
 
 }  // namespace sa::cli

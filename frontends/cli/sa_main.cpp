@@ -4,6 +4,7 @@
 //   sa param ...  a planar parameterization of a disk-topology surface
 //   sa seamless   a seamless parameterization from a frame field (integrable by Simplex Assembly)
 //   sa polycube   a PolyCube map of a tetrahedral mesh with a labelled boundary
+//   sa hex        a hexahedral mesh of a tetrahedral mesh, through its PolyCube map
 //   sa deform     a pose of a tet mesh (or planar triangles) from its handles' targets alone
 //   sa subdivide  Loop subdivision (to build large test meshes)
 // Exit status (cli_support.h, README.md): 0 verified success, 1 a result that did not pass
@@ -22,6 +23,7 @@
 #include "frontends/cli/command_options.h"
 #include "frontends/cli/deform_command.h"
 #include "frontends/cli/demo_command.h"
+#include "frontends/cli/hex_command.h"
 #include "frontends/cli/interruption.h"
 #include "frontends/cli/map_command.h"
 #include "frontends/cli/out_of_memory.h"
@@ -84,6 +86,8 @@ int run(int argc, char** argv) {
     CLI::App* seamless = sa::cli::add_seamless_command(app, seamless_arguments);
     sa::cli::PolycubeArguments polycube_arguments;
     CLI::App* polycube = sa::cli::add_polycube_command(app, polycube_arguments);
+    sa::cli::HexArguments hex_arguments;
+    CLI::App* hex = sa::cli::add_hex_command(app, hex_arguments);
     sa::cli::DeformArguments deform_arguments;
     CLI::App* deform = sa::cli::add_deform_command(app, deform_arguments);
     sa::cli::SubdivideArguments subdivide_arguments;
@@ -121,6 +125,7 @@ int run(int argc, char** argv) {
         if (param->parsed()) return sa::cli::run_param_command(param_arguments);
         if (seamless->parsed()) return sa::cli::run_seamless_command(seamless_arguments);
         if (polycube->parsed()) return sa::cli::run_polycube_command(polycube_arguments);
+        if (hex->parsed()) return sa::cli::run_hex_command(hex_arguments);
         if (deform->parsed()) return sa::cli::run_deform_command(deform_arguments);
         if (subdivide->parsed()) return sa::cli::run_subdivide_command(subdivide_arguments);
     } catch (const std::bad_alloc&) {

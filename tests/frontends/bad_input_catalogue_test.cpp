@@ -988,6 +988,7 @@ std::vector<Case> catalogue() {
              {"Param", bump_off, "param --mesh {D}/bump.off --out {D}/uv.obj --layout {D}/l.vtu"},
              {"Seamless", sphere_off, "seamless --mesh {D}/sphere.off --out {D}/s.obj"},
              {"Polycube", tets_mesh, "polycube --mesh {D}/t.mesh --out {D}/o.mesh"},
+             {"Hex", tets_mesh, "hex --mesh {D}/t.mesh --hexes 50 --out {D}/o.mesh"},
              {"Deform", lifted_box,
               "deform --rest {D}/box.mesh --targets {D}/t.txt --out {D}/o.vtu"},
              {"Demo", none, "demo --size 4 --out-dir {D}/demo"},

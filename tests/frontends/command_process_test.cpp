@@ -80,6 +80,7 @@ TEST(MemoryLimit, EveryCommandThatSolvesEndsAtOnceWhenTheBlasBufferCannotBeHad) 
              "param --mesh " + d + "/m.obj --out " + d + "/o.obj",
              "seamless --mesh " + d + "/m.obj --out " + d + "/o.obj",
              "polycube --mesh " + d + "/m.mesh --out " + d + "/o.mesh",
+             "hex --mesh " + d + "/m.mesh --out " + d + "/o.mesh",
              "deform --rest " + d + "/m.mesh --targets " + d + "/t.txt --out " + d + "/o.vtu",
              "demo --out-dir " + d + "/demo"}) {
         SCOPED_TRACE(arguments);
@@ -109,6 +110,8 @@ TEST(Plugins, AMissingVtkWriterIsFoundBeforeTheSolve) {
     for (const auto& [arguments, output] : std::vector<std::pair<std::string, std::string>>{
              {"map --rest " + d + "/p.txt --out " + d + "/o.vtu", "--out " + d + "/o.vtu"},
              {"polycube --mesh " + d + "/box.mesh --out " + d + "/o.mesh --vtu " + d + "/o.vtk",
+              "--vtu " + d + "/o.vtk"},
+             {"hex --mesh " + d + "/box.mesh --out " + d + "/o.mesh --vtu " + d + "/o.vtk",
               "--vtu " + d + "/o.vtk"}}) {
         SCOPED_TRACE(arguments);
         int status = 0;

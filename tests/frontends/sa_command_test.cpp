@@ -212,7 +212,7 @@ TEST_F(SaCommand, DemoRepairsTheFoldedHarmonicMap) {
 
 TEST_F(SaCommand, EveryLongCommandTakesMaxTime) {
     // The same option with the same check everywhere: a number or inf > 0, in the help.
-    for (const char* command : {"map", "param", "seamless", "deform", "polycube"}) {
+    for (const char* command : {"map", "param", "seamless", "deform", "polycube", "hex"}) {
         const Outcome help = sa(std::string(command) + " --help");
         EXPECT_NE(help.out.find("--max-time FLOAT:a number or inf > 0=inf"), std::string::npos)
             << command << ":\n"
