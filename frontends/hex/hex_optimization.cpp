@@ -101,6 +101,7 @@ HexOptimization optimize_hex_mesh(const HexMesh& mesh, const HexOptimizationOpti
         // To the untangling energy's convergence, not its first valid iterate, whose near-flat
         // corners would put the barrier far above where Newton can bring it down.
         u.until_valid = false;
+        u.max_iterations = options.max_iterations;
         u.max_time_seconds = options.max_time;
         u.num_threads = options.threads;
         const UntangleResult r =
