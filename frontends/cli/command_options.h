@@ -12,9 +12,9 @@
 
 #include "frontends/cli/deform_command.h"
 #include "frontends/cli/demo_command.h"
+#include "frontends/cli/hex_command.h"
 #include "frontends/cli/map_command.h"
 #include "frontends/cli/param_command.h"
-#include "frontends/cli/hex_command.h"
 #include "frontends/cli/polycube_command.h"
 #include "frontends/cli/seamless_command.h"
 #include "optim/errors.h"

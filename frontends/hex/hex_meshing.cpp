@@ -133,7 +133,7 @@ HexMeshing hex_mesh_from_polycube(const PreparedPolycube& prepared,
 
     // 5. The padding layer, where it is needed.
     HexMesh hexes = out.extraction.mesh;
-    out.locked_inverted_corners = boundary_locked_inverted_corners(hexes);
+    out.locked_inverted_corners = boundary_locked_inverted_corners(hexes, hex_boundary(hexes));
     if (options.padding > 0.0 && out.locked_inverted_corners > 0) {
         HexPadding padded = pad_boundary(hexes, options.padding);
         out.padding_hexes = padded.added_hexes;

@@ -65,9 +65,10 @@ struct HexMeshing {
     PlaneQuantization quantization;
     PolycubeSolve grid_polycube;  ///< stage 3, in grid units (empty when not run)
     HexExtraction extraction;
-    HexQuality extracted_quality;       ///< the hexes as extracted, before stages 5 and 6
-    Index locked_inverted_corners = 0;  ///< boundary_locked_inverted_corners() after extraction
-    Index padding_hexes = 0;            ///< added by stage 5
+    HexQuality extracted_quality;  ///< the hexes as extracted, before stages 5 and 6
+    /// boundary_locked_inverted_corners() (hex_quality.h) after extraction
+    Index locked_inverted_corners = 0;
+    Index padding_hexes = 0;  ///< added by stage 5
     HexOptimization optimization;
     HexVerification verification;
     std::string message;  ///< the outcome in a sentence or two

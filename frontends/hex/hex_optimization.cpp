@@ -51,35 +51,23 @@ HexOptimization optimize_hex_mesh(const HexMesh& mesh, const HexOptimizationOpti
     HexOptimization out;
     out.mesh = mesh;
     const Index nv = mesh.num_vertices(), nh = mesh.num_hexes();
-    std::vector<unsigned char> on_boundary(nv, 0);
     const HexBoundary boundary = hex_boundary(mesh);
-    for (Eigen::Index i = 0; i < boundary.quads.size(); ++i)
-        on_boundary[boundary.quads.data()[i]] = 1;
+    const std::vector<unsigned char>& on_boundary = boundary.on_boundary;
     for (Index v = 0; v < nv; ++v) out.free_vertices += on_boundary[v] ? 0 : 1;
     if (out.free_vertices == 0) {
         out.message = "no vertex inside the mesh to move";
         return out;
     }
-    // Inverted hexes, and of their inverted corners those that a free vertex can repair.
-    Index inverted = 0, repairable = 0;
+    // Inverted hexes; when all their inverted corners are locked on the boundary, nothing moves
+    // them.
+    Index inverted = 0, inverted_corners = 0;
     for (Index h = 0; h < nh; ++h) {
-        bool bad = false;
-        for (int c = 0; c < 8; ++c) {
-            const Index corner = mesh.hexes(h, c);
-            bool moves = !on_boundary[corner];
-            Eigen::Matrix3d edges;
-            for (int k = 0; k < 3; ++k) {
-                const Index v = mesh.hexes(h, kHexCornerEdges[c][k]);
-                moves |= !on_boundary[v];
-                edges.col(k) = (mesh.positions.row(v) - mesh.positions.row(corner)).transpose();
-            }
-            if (edges.determinant() > 0.0) continue;
-            bad = true;
-            repairable += moves ? 1 : 0;
-        }
-        inverted += bad ? 1 : 0;
+        Index bad = 0;
+        for (int c = 0; c < 8; ++c) bad += hex_corner_jacobian(mesh, h, c) > 0.0 ? 0 : 1;
+        inverted += bad > 0 ? 1 : 0;
+        inverted_corners += bad;
     }
-    if (inverted > 0 && repairable == 0) {
+    if (inverted > 0 && inverted_corners == boundary_locked_inverted_corners(mesh, boundary)) {
         out.message = "not optimized: " + std::to_string(inverted) +
                       " inverted hexes, each inverted at corners with all four vertices on the "
                       "boundary";

@@ -31,7 +31,7 @@
 namespace sa {
 
 struct HexOptimizationOptions {
-    int max_iterations = 100;  ///< Newton steps of the untangling, and of the optimization
+    int max_iterations = 100;     ///< Newton steps of the untangling, and of the optimization
     double max_time = kInfinity;  ///< seconds
     int threads = 0;              ///< 0 = all cores
 };

@@ -10,28 +10,6 @@
 
 namespace sa {
 
-Index boundary_locked_inverted_corners(const HexMesh& mesh) {
-    const HexBoundary boundary = hex_boundary(mesh);
-    std::vector<unsigned char> on_boundary(mesh.num_vertices(), 0);
-    for (Eigen::Index i = 0; i < boundary.quads.size(); ++i)
-        on_boundary[boundary.quads.data()[i]] = 1;
-    Index count = 0;
-    for (Index h = 0; h < mesh.num_hexes(); ++h) {
-        for (int c = 0; c < 8; ++c) {
-            const Index corner = mesh.hexes(h, c);
-            bool locked = on_boundary[corner] != 0;
-            Eigen::Matrix3d edges;
-            for (int k = 0; k < 3; ++k) {
-                const Index v = mesh.hexes(h, kHexCornerEdges[c][k]);
-                locked &= on_boundary[v] != 0;
-                edges.col(k) = (mesh.positions.row(v) - mesh.positions.row(corner)).transpose();
-            }
-            if (locked && !(edges.determinant() > 0.0)) ++count;
-        }
-    }
-    return count;
-}
-
 HexPadding pad_boundary(const HexMesh& mesh, double depth) {
     if (!(depth > 0.0) || !std::isfinite(depth))
         throw InvalidArgumentError("pad_boundary: the depth must be finite and > 0");

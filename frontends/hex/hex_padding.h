@@ -15,7 +15,8 @@
 // boundary, and the layer takes the turn.
 //
 // The moved vertices may fold hexes (a thin part, a concave feature): the optimization
-// (hex_optimization.h) untangles them.
+// (hex_optimization.h) untangles them. It is needed exactly where
+// boundary_locked_inverted_corners() (hex_quality.h) finds a corner.
 
 #include "geometry/mesh/hex_mesh.h"
 
@@ -25,11 +26,6 @@ struct HexPadding {
     HexMesh mesh;           ///< the padded mesh: the old vertices first, then the copies
     Index added_hexes = 0;  ///< one per boundary quad
 };
-
-/// The hex corners (corner and its three neighbours, kHexCornerEdges) with all four vertices on
-/// the boundary and a Jacobian <= 0: inverted or flat whatever the inner vertices do. The padding
-/// is needed exactly when there is one.
-Index boundary_locked_inverted_corners(const HexMesh& mesh);
 
 /// The padding above, `depth` > 0 (a fraction of the boundary edge length). Throws
 /// InvalidArgumentError on a depth <= 0.

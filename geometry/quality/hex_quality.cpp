@@ -22,6 +22,10 @@ Eigen::Matrix3d corner_edges(const HexMesh& mesh, Index h, int c) {
 
 }  // namespace
 
+double hex_corner_jacobian(const HexMesh& mesh, Index h, int c) {
+    return corner_edges(mesh, h, c).determinant();
+}
+
 double hex_scaled_jacobian(const HexMesh& mesh, Index h) {
     double worst = 1.0;
     for (int c = 0; c < 8; ++c) {
@@ -37,8 +41,8 @@ double hex_scaled_jacobian(const HexMesh& mesh, Index h) {
 }
 
 double hex_min_corner_jacobian(const HexMesh& mesh, Index h) {
-    double worst = corner_edges(mesh, h, 0).determinant();
-    for (int c = 1; c < 8; ++c) worst = std::min(worst, corner_edges(mesh, h, c).determinant());
+    double worst = hex_corner_jacobian(mesh, h, 0);
+    for (int c = 1; c < 8; ++c) worst = std::min(worst, hex_corner_jacobian(mesh, h, c));
     return worst;
 }
 
@@ -102,9 +106,27 @@ HexBoundary hex_boundary(const HexMesh& mesh) {
     for (const auto& [edge, uses] : edge_uses)
         if (uses != 2) ++out.open_edges;
     out.quads.resize(static_cast<Eigen::Index>(quads.size()), 4);
-    for (std::size_t i = 0; i < quads.size(); ++i)
-        for (int k = 0; k < 4; ++k) out.quads(static_cast<Eigen::Index>(i), k) = quads[i][k];
+    out.on_boundary.assign(mesh.num_vertices(), 0);
+    for (std::size_t i = 0; i < quads.size(); ++i) {
+        for (int k = 0; k < 4; ++k) {
+            out.quads(static_cast<Eigen::Index>(i), k) = quads[i][k];
+            out.on_boundary[quads[i][k]] = 1;
+        }
+    }
     return out;
+}
+
+Index boundary_locked_inverted_corners(const HexMesh& mesh, const HexBoundary& boundary) {
+    Index count = 0;
+    for (Index h = 0; h < mesh.num_hexes(); ++h) {
+        for (int c = 0; c < 8; ++c) {
+            bool locked = boundary.on_boundary[mesh.hexes(h, c)] != 0;
+            for (const int k : kHexCornerEdges[c])
+                locked &= boundary.on_boundary[mesh.hexes(h, k)] != 0;
+            if (locked && !(hex_corner_jacobian(mesh, h, c) > 0.0)) ++count;
+        }
+    }
+    return count;
 }
 
 }  // namespace sa

@@ -17,6 +17,9 @@
 
 namespace sa {
 
+/// The Jacobian of corner `c` (0..7) of hex `h`: det of its three edges (kHexCornerEdges).
+double hex_corner_jacobian(const HexMesh& mesh, Index h, int c);
+
 /// The scaled Jacobian of hex `h`; 0 when a corner has an edge of zero length.
 double hex_scaled_jacobian(const HexMesh& mesh, Index h);
 
@@ -41,6 +44,7 @@ HexQuality hex_quality(const HexMesh& mesh);
 struct HexBoundary {
     /// #Q x 4 boundary faces, each turning counter-clockwise seen from outside.
     Eigen::MatrixXi quads;
+    std::vector<unsigned char> on_boundary;  ///< per vertex: in a boundary face
     Index faces_in_more_than_two_hexes = 0;
     /// Boundary edges not shared by exactly two boundary faces.
     Index open_edges = 0;
@@ -49,5 +53,9 @@ struct HexBoundary {
 
 /// The boundary of `mesh`'s hexes, described above.
 HexBoundary hex_boundary(const HexMesh& mesh);
+
+/// The hex corners (a corner and its three neighbours) with all four vertices on the boundary
+/// and a Jacobian <= 0: inverted or flat whatever the inner vertices do.
+Index boundary_locked_inverted_corners(const HexMesh& mesh, const HexBoundary& boundary);
 
 }  // namespace sa

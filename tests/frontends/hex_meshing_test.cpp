@@ -189,11 +189,9 @@ TEST(HexPadding, AddsALayerUnderTheBoundary) {
     const HexBoundary b = hex_boundary(padded.mesh);
     EXPECT_TRUE(b.closed());
     EXPECT_EQ(b.quads.rows(), 24);
-    std::vector<unsigned char> on_boundary(padded.mesh.num_vertices(), 0);
-    for (Eigen::Index i = 0; i < b.quads.size(); ++i) {
-        on_boundary[b.quads.data()[i]] = 1;
+    const std::vector<unsigned char>& on_boundary = b.on_boundary;
+    for (Eigen::Index i = 0; i < b.quads.size(); ++i)
         EXPECT_GE(b.quads.data()[i], block.num_vertices());  // the copies
-    }
     for (Index h = 0; h < padded.mesh.num_hexes(); ++h) {
         for (int c = 0; c < 8; ++c) {
             bool free = !on_boundary[padded.mesh.hexes(h, c)];
@@ -207,13 +205,14 @@ TEST(HexPadding, AddsALayerUnderTheBoundary) {
 
     // A corner of the block pushed inside: its corner tetrahedron, all four vertices on the
     // boundary, is inverted, which only padding can repair; the padded block has none.
-    EXPECT_EQ(boundary_locked_inverted_corners(block), 0);
+    EXPECT_EQ(boundary_locked_inverted_corners(block, hex_boundary(block)), 0);
     HexMesh pushed = block;
     for (Index v = 0; v < pushed.num_vertices(); ++v)
         if (pushed.positions.row(v).norm() == 0.0) pushed.positions.row(v) << 1.2, 1.2, 1.2;
     // The pushed corner, and the corners at its three neighbours, whose edges reach it.
-    EXPECT_EQ(boundary_locked_inverted_corners(pushed), 4);
-    EXPECT_EQ(boundary_locked_inverted_corners(pad_boundary(pushed, 0.5).mesh), 0);
+    EXPECT_EQ(boundary_locked_inverted_corners(pushed, hex_boundary(pushed)), 4);
+    const HexMesh padded_pushed = pad_boundary(pushed, 0.5).mesh;
+    EXPECT_EQ(boundary_locked_inverted_corners(padded_pushed, hex_boundary(padded_pushed)), 0);
 }
 
 PreparedPolycube prepared_shape(const SimplicialMesh& mesh) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -67,6 +68,8 @@ TEST(HexQuality, BoundaryOfARowIsClosedAndHexesTouchingAtAnEdgeAreNot) {
     const HexBoundary b = hex_boundary(row);
     EXPECT_EQ(b.quads.rows(), 14);  // 4 sides x 3 + 2 ends
     EXPECT_TRUE(b.closed());
+    // Every vertex of a row of cubes is on its boundary.
+    EXPECT_EQ(std::count(b.on_boundary.begin(), b.on_boundary.end(), 1), row.num_vertices());
     // Faces turn counter-clockwise seen from outside: the boundary encloses a positive volume
     // (divergence theorem on the quads split in two).
     double volume = 0.0;
