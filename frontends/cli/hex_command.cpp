@@ -213,7 +213,9 @@ int run_hex_command(const HexArguments& arguments) {
                                  {"added_hexes", result.padding_hexes}};
             report["optimization"] = {{"ran", result.optimization.ran},
                                       {"free_vertices", result.optimization.free_vertices},
-                                      {"newton_steps", result.optimization.newton.num_steps()},
+                                      {"sliding_vertices", result.optimization.sliding_vertices},
+                                      {"rounds", result.optimization.rounds},
+                                      {"newton_steps", result.optimization.newton_steps},
                                       {"message", result.optimization.message}};
             report["verification"] = hex_verification_json(result.verification);
         }

@@ -133,10 +133,15 @@ HexMeshing hex_mesh_from_polycube(const PreparedPolycube& prepared,
 
     // 5. The padding layer, where it is needed.
     HexMesh hexes = out.extraction.mesh;
+    Eigen::MatrixXd grid_points = out.extraction.grid_points.cast<double>();
     out.locked_inverted_corners = boundary_locked_inverted_corners(hexes, hex_boundary(hexes));
     if (options.padding > 0.0 && out.locked_inverted_corners > 0) {
         HexPadding padded = pad_boundary(hexes, options.padding);
         out.padding_hexes = padded.added_hexes;
+        Eigen::MatrixXd padded_points(padded.mesh.num_vertices(), 3);
+        for (Index v = 0; v < padded.mesh.num_vertices(); ++v)
+            padded_points.row(v) = grid_points.row(padded.source[v]);
+        grid_points = std::move(padded_points);
         hexes = std::move(padded.mesh);
         log_line(logger, "hex: " + std::to_string(out.locked_inverted_corners) +
                              " hex corners inverted or flat with all their vertices on the "
@@ -145,14 +150,16 @@ HexMeshing hex_mesh_from_polycube(const PreparedPolycube& prepared,
     }
     out.padding_seconds = stage.lap();
 
-    // 6. The inner vertices moved.
+    // 6. The inner vertices moved, the boundary ones slid on the surface.
     out.optimization.mesh = hexes;
     if (options.optimize) {
+        const PolycubeSurface surface(prepared.boundary.triangles, out.grid_polycube.positions,
+                                      rest);
         HexOptimizationOptions o;
         o.max_iterations = options.optimization_iterations;
         o.max_time = std::max(options.polycube.max_time - clock.seconds(), 1e-3);
         o.threads = options.polycube.threads;
-        out.optimization = optimize_hex_mesh(hexes, o, logger);
+        out.optimization = optimize_hex_mesh(hexes, o, logger, {&surface, grid_points});
     }
     out.optimization_seconds = stage.lap();
 

@@ -26,8 +26,13 @@ HexPadding pad_boundary(const HexMesh& mesh, double depth) {
     out.added_hexes = static_cast<Index>(nq);
     out.mesh.positions.resize(next, 3);
     out.mesh.positions.topRows(nv) = mesh.positions;
-    for (Index v = 0; v < nv; ++v)
-        if (copy[v] >= 0) out.mesh.positions.row(copy[v]) = mesh.positions.row(v);
+    out.source.resize(next);
+    for (Index v = 0; v < nv; ++v) {
+        out.source[v] = v;
+        if (copy[v] < 0) continue;
+        out.mesh.positions.row(copy[v]) = mesh.positions.row(v);
+        out.source[copy[v]] = v;
+    }
     out.mesh.hexes.resize(nh + nq, 8);
     out.mesh.hexes.topRows(nh) = mesh.hexes;
     // The outward quad (a, b, c, d) turns counter-clockwise seen from outside: the bottom of a

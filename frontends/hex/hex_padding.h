@@ -18,12 +18,17 @@
 // (hex_optimization.h) untangles them. It is needed exactly where
 // boundary_locked_inverted_corners() (hex_quality.h) finds a corner.
 
+#include <vector>
+
 #include "geometry/mesh/hex_mesh.h"
 
 namespace sa {
 
 struct HexPadding {
-    HexMesh mesh;           ///< the padded mesh: the old vertices first, then the copies
+    HexMesh mesh;  ///< the padded mesh: the old vertices first, then the copies
+    /// Per vertex of `mesh`: the vertex of the input it is or copies (the copies are the new
+    /// boundary, where the old one was).
+    std::vector<Index> source;
     Index added_hexes = 0;  ///< one per boundary quad
 };
 

@@ -11,13 +11,19 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "energies/subspace_point_energy.h"
+#include "energies/vertex_copy_energies.h"
 #include "frontends/cli/cli_support.h"
 #include "frontends/cli/command_options.h"
 #include "frontends/hex/grid_start.h"
 #include "frontends/hex/hex_optimization.h"
 #include "frontends/hex/hex_padding.h"
+#include "frontends/hex/polycube_surface.h"
 #include "frontends/polycube/polycube_planes.h"
 #include "geometry/io/medit_io.h"
+#include "geometry/mesh/mesh_topology.h"
+#include "geometry/mesh/tet_boundary.h"
+#include "optim/derivative_check.h"
 #include "optim/errors.h"
 #include "tests/fixtures/voxel_meshes.h"
 
@@ -155,6 +161,123 @@ TEST(HexOptimization, UntanglesAnInvertedHexAndRestoresTheCubes) {
     EXPECT_EQ(none.free_vertices, 0);
 }
 
+/// The unit cube's tetrahedra (n per side), its boundary, and `rest`: the cube moved by x ->
+/// x + a sin(pi x)(y + z) e_x, which keeps every face in place but slides the points of the
+/// y and z faces along x, unevenly: a PolyCube map (grid = n x) whose hexes have sheared
+/// boundary faces.
+struct SlidCube {
+    SimplicialMesh mesh;
+    TetBoundary boundary;
+    Eigen::MatrixXd grid, rest;
+};
+SlidCube slid_cube(int n, double a) {
+    SlidCube c;
+    c.mesh = testing::voxel_tetrahedra({{0, 0, 0}}, n);
+    c.boundary = tet_boundary(c.mesh, mesh_topology(c.mesh, "cube"));
+    c.grid = c.mesh.vertices * double(n);
+    c.rest = c.mesh.vertices;
+    for (Index v = 0; v < c.rest.rows(); ++v) {
+        const Eigen::Vector3d p = c.mesh.vertices.row(v).transpose();
+        c.rest(v, 0) += a * std::sin(M_PI * p.x()) * (p.y() + p.z());
+    }
+    return c;
+}
+
+// Point location on the PolyCube's planes, and the closest rest point on a plane and on an edge.
+TEST(PolycubeSurface, LocatesGridPointsAndProjectsRestPoints) {
+    const SlidCube c = slid_cube(4, 0.2);
+    const PolycubeSurface surface(c.boundary.triangles, c.grid, c.rest);
+    EXPECT_EQ(surface.triangles_left_out(), 0);
+    // A grid point on the face z = 0 lands where the map takes it; the tangent map is that of
+    // x + a sin(pi x) y along x and y.
+    const std::optional<SurfacePoint> at = surface.locate(2, Eigen::Vector3d(1.5, 2.5, 0.0));
+    ASSERT_TRUE(at);
+    EXPECT_NEAR(at->rest.z(), 0.0, 1e-15);
+    EXPECT_NEAR(at->rest.y(), 2.5 / 4.0, 1e-12);
+    EXPECT_NEAR(at->grid.x(), 1.5, 1e-12);
+    EXPECT_NEAR(at->jacobian(1, 1), 0.25, 1e-12);
+    EXPECT_EQ(at->jacobian.col(2).norm(), 0.0);
+    // Outside the cube's face: nothing.
+    EXPECT_FALSE(surface.locate(2, Eigen::Vector3d(4.5, 1.0, 0.0)));
+    EXPECT_FALSE(surface.locate(2, Eigen::Vector3d(1.0, 1.0, 2.0)));  // no plane z = 2
+    // A rest point above the face z = 0 returns to it, straight down.
+    const std::optional<SurfacePoint> down =
+        surface.closest(2, Eigen::Vector3d(2.0, 2.0, 0.0), Eigen::Vector3d(0.4, 0.6, 0.3), -1, 2.0);
+    ASSERT_TRUE(down);
+    EXPECT_LT((down->rest - Eigen::Vector3d(0.4, 0.6, 0.0)).norm(), 1e-12);
+    // On the edge where z = 0 meets y = 0 (the line along x), it stays on the edge.
+    const std::optional<SurfacePoint> edge =
+        surface.closest(2, Eigen::Vector3d(2.0, 0.0, 0.0), Eigen::Vector3d(0.45, 0.1, 0.2), 1, 2.0);
+    ASSERT_TRUE(edge);
+    EXPECT_LT((edge->rest - Eigen::Vector3d(0.45, 0.0, 0.0)).norm(), 1e-12);
+    EXPECT_NEAR(edge->grid.y(), 0.0, 1e-12);
+    EXPECT_NEAR(edge->grid.z(), 0.0, 1e-12);
+    EXPECT_THROW(PolycubeSurface(c.boundary.triangles, c.grid.leftCols(2), c.rest),
+                 InvalidArgumentError);
+}
+
+// The energy of points in affine subspaces: derivatives by finite differences, and the value is
+// the inner energy's at origin + basis q.
+TEST(SubspacePointEnergy, DerivativesMatchFiniteDifferences) {
+    SimplexEnergyOptions o;
+    o.barrier_distortion = DistortionType::kConformal;
+    VertexSimplexEnergy<3> corner(SimplexEnergy<3>(o, {1.0}), {Mat<3>::Identity()});
+    std::vector<Vec<3>> origins = {Vec<3>(0, 0, 0), Vec<3>(1.1, 0.1, 0), Vec<3>(0.2, 0.9, 0.1),
+                                   Vec<3>(0.1, 0.0, 1.0)};
+    std::vector<Mat<3>> bases(4, Mat<3>::Identity());
+    origins[0].setZero();                       // point 0 moves freely
+    bases[1] << 1, 0, 0, 0.2, 1, 0, 0, 0, 0;    // point 1 on a plane
+    bases[2] << 0.5, 0, 0, 0.5, 0, 0, 0, 0, 0;  // point 2 on a line
+    bases[3].setZero();                         // point 3 fixed
+    const SubspacePointEnergy<4, 3, VertexSimplexEnergy<3>> energy(corner, {{0, 1, 2, 3}}, origins,
+                                                                   bases);
+    Vec<12> q;
+    q << 0.05, -0.02, 0.03, 0.1, -0.05, 0.0, 0.2, 0.0, 0.0, 0.0, 0.0, 0.0;
+    const DerivativeCheck check = check_derivatives(energy, 0, q);
+    EXPECT_TRUE(check.passes(1e-6)) << check.gradient_error << " " << check.hessian_error;
+    Vec<12> x;
+    for (int k = 0; k < 4; ++k) x.segment<3>(3 * k) = origins[k] + bases[k] * q.segment<3>(3 * k);
+    EXPECT_EQ(energy.value(0, q), corner.value(0, x));
+    EXPECT_THROW(
+        (SubspacePointEnergy<4, 3, VertexSimplexEnergy<3>>(corner, {{0, 1, 2, 7}}, origins, bases)),
+        InvalidArgumentError);
+}
+
+// On the slid cube the boundary faces of the extracted hexes are sheared: with the boundary
+// fixed the worst hex stays sheared; sliding on the cube's surface brings every hex back to
+// (nearly) a cube, every boundary vertex on its face and the cube's corners where they were.
+TEST(HexOptimization, SlidingBoundaryUnshearsTheFacesOfASlidCube) {
+    const SlidCube c = slid_cube(4, 0.15);
+    const HexExtraction e = extract_hexes(c.mesh.simplices, c.grid, c.rest);
+    const double extracted = hex_quality(e.mesh).min_scaled_jacobian;
+    ASSERT_LT(extracted, 0.99);
+    const HexOptimization fixed = optimize_hex_mesh(e.mesh, {});
+    const PolycubeSurface surface(c.boundary.triangles, c.grid, c.rest);
+    const HexOptimization slid =
+        optimize_hex_mesh(e.mesh, {}, {}, {&surface, e.grid_points.cast<double>()});
+    ASSERT_TRUE(fixed.ran && slid.ran) << fixed.message << " / " << slid.message;
+    EXPECT_EQ(fixed.sliding_vertices, 0);
+    EXPECT_EQ(slid.sliding_vertices, 98 - 8);  // the 98 boundary vertices but the 8 corners
+    const double fixed_min = hex_quality(fixed.mesh).min_scaled_jacobian;
+    const double slid_min = hex_quality(slid.mesh).min_scaled_jacobian;
+    EXPECT_LT(fixed_min, 0.99) << extracted;
+    EXPECT_GT(slid_min, 0.999) << fixed_min;
+    const HexBoundary b = hex_boundary(e.mesh);
+    for (Index v = 0; v < e.mesh.num_vertices(); ++v) {
+        if (!b.on_boundary[v]) continue;
+        const Eigen::RowVector3d p = slid.mesh.positions.row(v);
+        const double to_face =
+            std::min(p.cwiseAbs().minCoeff(), (p.array() - 1.0).abs().minCoeff());
+        EXPECT_LT(to_face, 1e-12) << "vertex " << v;
+        const Eigen::Vector3i g = e.grid_points.row(v).transpose();
+        if (((g.array() == 0) || (g.array() == 4)).all()) {
+            EXPECT_EQ(slid.mesh.positions.row(v), e.mesh.positions.row(v));
+        }
+    }
+    EXPECT_THROW(optimize_hex_mesh(e.mesh, {}, {}, {&surface, Eigen::MatrixXd(3, 3)}),
+                 InvalidArgumentError);
+}
+
 // A smooth warp of the inside (every hex valid) lowers the scaled Jacobian; the optimization
 // raises its minimum and its mean.
 TEST(HexOptimization, RaisesTheWorstScaledJacobianOfAWarpedBlock) {
@@ -190,8 +313,12 @@ TEST(HexPadding, AddsALayerUnderTheBoundary) {
     EXPECT_TRUE(b.closed());
     EXPECT_EQ(b.quads.rows(), 24);
     const std::vector<unsigned char>& on_boundary = b.on_boundary;
-    for (Eigen::Index i = 0; i < b.quads.size(); ++i)
-        EXPECT_GE(b.quads.data()[i], block.num_vertices());  // the copies
+    ASSERT_EQ(Index(padded.source.size()), padded.mesh.num_vertices());
+    for (Eigen::Index i = 0; i < b.quads.size(); ++i) {
+        const Index v = b.quads.data()[i];
+        EXPECT_GE(v, block.num_vertices());  // the copies, where their sources were
+        EXPECT_EQ(padded.mesh.positions.row(v), block.positions.row(padded.source[v]));
+    }
     for (Index h = 0; h < padded.mesh.num_hexes(); ++h) {
         for (int c = 0; c < 8; ++c) {
             bool free = !on_boundary[padded.mesh.hexes(h, c)];
