@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "energies/exponent_continuation.h"
 #include "energies/simplex_energy.h"
 #include "energies/subspace_point_energy.h"
 #include "energies/vertex_copy_energies.h"
@@ -55,29 +56,26 @@ constexpr double kRoundDecrease = 1e-4;
 constexpr double kSmallestRoundStep = 1.0 / 64.0;
 /// Cells around a moved grid point where its closest rest point is looked for.
 constexpr double kSearchRadius = 2.0;
-/// The barrier's exponent s d stays within this of its least value 0 at the worst corner: its
-/// weight at most e^kExponentRange times a perfect corner's.
-constexpr double kExponentRange = 20.0;
-
-/// The scale s of exp(s d) for corners whose worst conformal distortion is d_max: 1 when
-/// d_max <= kExponentRange, else kExponentRange / d_max. Newton on exp(s d) lowers d by about
-/// 1/s per step (e^{s d} along a linear d is a 1D Newton step of 1/s), so a corner left nearly
-/// flat by the untangling (d in the hundreds) would take hundreds of steps at s = 1, and its
-/// value would swamp the sum; a smaller s brings it down in a few, and the rounds raise s to 1
-/// as d_max falls.
+/// The exponent s of exp(s d) for a round at `positions`: continuation_exponent() of 1 and the
+/// corners' spread of conformal distortions (energies/exponent_continuation.h). A corner left
+/// nearly flat by the untangling (d in the hundreds) would take hundreds of Newton steps at s = 1
+/// (Newton lowers exp(s d)'s d by about 1/s per step) and its value would swamp the sum; the
+/// rounds raise s to 1 as the spread falls.
 double exponent_scale(const Eigen::MatrixXd& positions,
                       const std::vector<std::array<Index, 4>>& corners) {
     SimplexEnergyOptions o;
     o.barrier_distortion = DistortionType::kConformal;
     const SimplexEnergy<3> measure(o, {});
-    double worst = 1.0;
+    double worst = 1.0, best = kInfinity;
     for (const auto& c : corners) {
         Mat<3> edges;
         for (int k = 0; k < 3; ++k)
             edges.col(k) = (positions.row(c[k + 1]) - positions.row(c[0])).transpose();
-        worst = std::max(worst, measure.barrier_distortion(edges));
+        const double d = measure.barrier_distortion(edges);
+        worst = std::max(worst, d);
+        best = std::min(best, d);
     }
-    return std::min(1.0, kExponentRange / worst);
+    return continuation_exponent(1.0, worst - std::min(best, worst));
 }
 
 /// What a vertex may do: move freely (inner), slide (on plane `plane`, along the grid axes

@@ -27,11 +27,11 @@
 // went (PolycubeSurface::closest): exact on a flat face, however the PolyCube map distorts it. The
 // round's step is halved until no hex is inverted and the energy is lower.
 //
-// Rounds. exp(s d) with s = min(1, 20 / the worst corner's d) (exponent_scale() in the source):
-// Newton lowers d by about 1/s per step, so a corner left nearly flat by the untangling needs few
-// steps, and s rises to 1 as the worst corner improves. Rounds of at most 20 Newton steps repeat
-// until s = 1 and a round lowers the energy by less than 1e-4 of itself, or max_iterations steps
-// in all. Without a surface the boundary is fixed and only the rounds remain.
+// Rounds. exp(s d), s from E_C's continuation rule (energies/exponent_continuation.h): 20 over
+// the corners' spread of distortions, at most 1, so that a corner left nearly flat by the
+// untangling needs few Newton steps, and s rises to 1 as the spread falls. Rounds of at most 20
+// Newton steps repeat until s = 1 and a round lowers the energy by less than 1e-4 of itself, or
+// max_iterations steps in all. Without a surface the boundary is fixed and only the rounds remain.
 //
 // A mesh with inverted hexes has no finite energy: their corners are untangled first, by the
 // regularized barrier of Garanzha et al. (frontends/simplex_assembly/untangle.h) on the corner

@@ -304,7 +304,7 @@ VertexStage run_vertex_stage(const SimplicialMesh& mesh, const RestFrames<D>& fr
     bool last_round = false, improved = false;
     // Each round runs to convergence or to the iteration limit; the rounds share the time limit.
     while (!budget.exhausted()) {
-        const double s = last_round ? c.s : std::min(c.s, kExponentRange / d.spread());
+        const double s = last_round ? c.s : continuation_exponent(c.s, d.spread());
         char line[160];
         std::snprintf(line, sizeof line,
                       "vertex stage: exponent continuation round %d, s = %.4g (asked %.4g), "

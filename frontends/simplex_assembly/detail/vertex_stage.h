@@ -12,21 +12,20 @@
 // linear constraints as its only assembly terms: with constraints the engine's schedule keeps
 // them (as in the assembly), without them it is plain projected Newton.
 //
-// E_C's exponent continuation. A valid start can still be far from optimal: an untangled map
-// (untangle.h) of a fixed-boundary problem with a large tangled region has simplices with
-// s d ~ 150 next to perfect ones, so the per-simplex Hessians span e^150 and no regularization
-// makes their sum factorizable ("factorization failed" at the first step: the untangled map was
-// returned as it was). With an ExponentContinuation (the built-in E_C) the stage runs rounds at
-// s_r = min(s, kExponentRange / (d_max - d_min)), d_max and d_min the largest and smallest barrier
-// distortion of a simplex with a free vertex at the round's start (the Hessians span about
-// e^{s_r (d_max - d_min)}), each to convergence, raising s_r as the spread falls until s_r = s;
-// a round that lowers the spread by less than 1% ends the continuation, and a last round at s
-// follows from the best iterate so far. Each round has the stage's iteration limit; they share
-// its time limit.
-// The result is the iterate with the lowest energy at the requested s (never worse than the
-// start). This is the one exponent continuation: the mesh driver's vertex stage and the descent
-// from a Tutte start (the descent mode, detail/vertex_descent.h, whose bound rounds each run it)
-// both go through it.
+// E_C's exponent continuation (its rule: energies/exponent_continuation.h). A valid start can still
+// be far from optimal: an untangled map (untangle.h) of a fixed-boundary problem with a large
+// tangled region has simplices with s d ~ 150 next to perfect ones, so the per-simplex Hessians
+// span e^150 and no regularization makes their sum factorizable ("factorization failed" at the
+// first step: the untangled map was returned as it was). With an ExponentContinuation (the built-in
+// E_C) the stage runs rounds at s_r = min(s, kExponentRange / (d_max - d_min)), d_max and d_min the
+// largest and smallest barrier distortion of a simplex with a free vertex at the round's start (the
+// Hessians span about e^{s_r (d_max - d_min)}), each to convergence, raising s_r as the spread
+// falls until s_r = s; a round that lowers the spread by less than 1% ends the continuation, and a
+// last round at s follows from the best iterate so far. Each round has the stage's iteration limit;
+// they share its time limit. The result is the iterate with the lowest energy at the requested s
+// (never worse than the start). This is the one exponent continuation: the mesh driver's vertex
+// stage and the descent from a Tutte start (the descent mode, detail/vertex_descent.h, whose bound
+// rounds each run it) both go through it.
 //
 // A run (a round, or the single run without a continuation) whose result has degenerate
 // simplices (the verification's relative rule) while its start had none is undone and ends the
@@ -40,6 +39,7 @@
 #include <string>
 #include <vector>
 
+#include "energies/exponent_continuation.h"
 #include "frontends/simplex_assembly/detail/assembly_problem.h"
 #include "frontends/simplex_assembly/detail/prepared_problem.h"
 #include "frontends/simplex_assembly/map_options.h"
@@ -51,17 +51,6 @@
 #include "optim/newton_summary.h"
 
 namespace sa {
-
-/// The worst simplex's barrier relative to a perfect one's, as a power of e, at the start of a
-/// round. Measured on generated disks with sliver triangles (docs/measurements.md, "Robustness"):
-/// ranges of 10 to 30 converge, 50 leaves the first factorization failing.
-inline constexpr double kExponentRange = 20.0;
-/// Rounds of a continuation at most.
-inline constexpr int kContinuationRounds = 30;
-/// A round that lowers what a continuation follows (the spread of distortions; in the descent's
-/// bound rounds, the largest distortion's distance to the identity's) by less than this share
-/// ends it: the next round would hardly differ.
-inline constexpr double kContinuationStall = 0.01;
 
 struct VertexStage {
     VertexStageOutcome outcome = VertexStageOutcome::kSkippedInfeasibleStart;
