@@ -29,6 +29,7 @@ import tempfile
 from bench_common import fmt, run_measured, write_section
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
 CHECKER = os.path.join(HERE, 'check_hex.py')
 
 # The folders of ../shared/data whose meshes are run, and the order of the known ones.
@@ -145,8 +146,9 @@ def table(rows):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
-    ap.add_argument('--sa', default='/work/dev/build/bin/sa', help='the sa binary')
-    ap.add_argument('--data', default='/work/shared/data', help='the data folder')
+    ap.add_argument('--sa', default=os.path.join(ROOT, 'build', 'bin', 'sa'), help='the sa binary')
+    ap.add_argument('--data', default=os.path.join(ROOT, '..', 'shared', 'data'),
+                    help='the data folder')
     ap.add_argument('--only', action='append', default=[],
                     help='run only the meshes whose name contains this text (repeatable)')
     ap.add_argument('--max-time', type=float, default=300.0, help='--max-time of each run')
